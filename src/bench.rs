@@ -1,0 +1,70 @@
+//! `riverworld bench`: times base-mesh construction (paper §4, Table 4's "creating the base
+//! mesh") for random planets and Earth maps, and prints a Markdown table.
+
+use crate::build::{build_planet, PlanetSpec};
+use crate::generate::{load_map, MapSource};
+use crate::maps::MapLimits;
+use crate::params::Params;
+use std::path::Path;
+use std::sync::Arc;
+use std::time::Instant;
+
+/// One benchmark case.
+struct Case {
+    name: String,
+    spec: PlanetSpec,
+}
+
+fn cases(maps: &Path, quick: bool) -> Vec<Case> {
+    let random = |faces: u32| Case {
+        name: format!("random, {faces} base faces"),
+        spec: PlanetSpec { seed: 42, params: Params { base_faces: faces, ..Params::default() }, map: None },
+    };
+    let mut out = vec![random(5_000), random(100_000)];
+    if !quick {
+        out.push(random(1_000_000));
+    }
+    let mut maps_list = vec!["earth_landmask_ne10m_1024x512.png"];
+    if !quick {
+        maps_list.push("earth_landmask_ne10m_4096x2048.png");
+    }
+    for file in maps_list {
+        let src = MapSource { path: maps.join(file), ..MapSource::default() };
+        match load_map(&src, &MapLimits::default()) {
+            Ok(map) => out.push(Case {
+                name: format!("Earth bitmap {file}"),
+                spec: PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) },
+            }),
+            Err(e) => eprintln!("skipping {file}: {e}"),
+        }
+    }
+    out
+}
+
+/// Runs every case `runs` times and prints the median.
+pub fn run(maps: &Path, runs: usize, quick: bool) {
+    println!("| case | faces | vertices | bytes/vertex | build ms (median of {runs}) | Mfaces/s |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    for case in cases(maps, quick) {
+        let mut times = Vec::new();
+        let mut last = None;
+        for _ in 0..runs {
+            let t = Instant::now();
+            let planet = build_planet(&case.spec, &mut |_, _| {}).expect("benchmark planet builds");
+            times.push(t.elapsed().as_secs_f64() * 1000.0);
+            last = Some(planet.stats);
+        }
+        times.sort_by(f64::total_cmp);
+        let ms = times[times.len() / 2];
+        let s = last.expect("at least one run");
+        println!(
+            "| {} | {} | {} | {:.1} | {:.1} | {:.2} |",
+            case.name,
+            s.faces,
+            s.vertices,
+            s.bytes_per_vertex,
+            ms,
+            s.faces as f64 / ms / 1000.0
+        );
+    }
+}

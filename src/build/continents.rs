@@ -1,0 +1,179 @@
+//! Continents (paper §4.1): faces labelled sea or land, either grown at random face by face to a
+//! land percentage, or read from a user's map (Figure 8 mode); then edges and vertices typed.
+
+use crate::maps::{Map, MapKind};
+use crate::mesh::{EdgeKind, FaceKind, Mesh, VertexFlags};
+use crate::rng::Sequence;
+use glam::DVec3;
+
+/// Latitude and longitude in degrees of a planet-centred point (+Z north, longitude 0 on +X).
+pub fn lat_lon(p: DVec3) -> (f64, f64) {
+    let n = p.normalize();
+    (n.z.clamp(-1.0, 1.0).asin().to_degrees(), n.y.atan2(n.x).to_degrees())
+}
+
+/// Unit direction of a latitude/longitude in degrees.
+pub fn direction(lat_deg: f64, lon_deg: f64) -> DVec3 {
+    let (lat, lon) = (lat_deg.to_radians(), lon_deg.to_radians());
+    DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin())
+}
+
+/// Centroid of a face.
+pub fn face_centre(mesh: &Mesh, f: u32) -> DVec3 {
+    mesh.faces[f as usize].v.iter().map(|&v| mesh.pos(v)).sum::<DVec3>() / 3.0
+}
+
+/// Grows `count` continents from random start faces until land covers `land_percent` of the
+/// surface. A face may join a continent when its vertices already belong to that continent,
+/// except at most one pure sea vertex, so two continents never share a vertex (§4.1).
+/// Returns the land fraction reached.
+pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) -> f64 {
+    const FREE: u16 = u16::MAX;
+    let nf = mesh.faces.len();
+    let areas: Vec<f64> = (0..nf as u32).map(|f| mesh.face_area_vector(f).length()).collect();
+    let total: f64 = areas.iter().sum();
+    let target = total * land_percent / 100.0;
+    let mut owner = vec![FREE; mesh.vertices.len()];
+    let mut rng = Sequence::new(seed, 0xc0_7713);
+    let mut frontier: Vec<Vec<u32>> = Vec::new();
+    let mut land = 0.0;
+    for f in mesh.faces.iter_mut() {
+        f.kind = FaceKind::Sea;
+    }
+
+    let add = |mesh: &mut Mesh, owner: &mut [u16], frontier: &mut Vec<u32>, f: u32, c: u16| {
+        let face = mesh.faces[f as usize];
+        mesh.faces[f as usize].kind = FaceKind::Land;
+        for &v in &face.v {
+            owner[v as usize] = c;
+        }
+        for &e in &face.e {
+            let edge = &mesh.edges[e as usize];
+            let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+            if mesh.faces[g as usize].kind == FaceKind::Sea {
+                frontier.push(g);
+            }
+        }
+        areas[f as usize]
+    };
+
+    for c in 0..count.min(u16::MAX as u32 - 1) as u16 {
+        for _ in 0..10_000 {
+            let f = rng.below(nf) as u32;
+            let face = mesh.faces[f as usize];
+            if face.v.iter().all(|&v| owner[v as usize] == FREE) {
+                let mut list = Vec::new();
+                land += add(mesh, &mut owner, &mut list, f, c);
+                frontier.push(list);
+                break;
+            }
+        }
+    }
+    let mut active: Vec<usize> = (0..frontier.len()).collect();
+    while land < target && !active.is_empty() {
+        let k = rng.below(active.len());
+        let c = active[k];
+        let list = &mut frontier[c];
+        if list.is_empty() {
+            active.swap_remove(k);
+            continue;
+        }
+        let i = rng.below(list.len());
+        let f = list.swap_remove(i);
+        let face = mesh.faces[f as usize];
+        if face.kind == FaceKind::Land {
+            continue;
+        }
+        let free = face.v.iter().filter(|&&v| owner[v as usize] == FREE).count();
+        let ours = face.v.iter().filter(|&&v| owner[v as usize] == c as u16).count();
+        if free <= 1 && free + ours == 3 {
+            let mut list = std::mem::take(&mut frontier[c]);
+            land += add(mesh, &mut owner, &mut list, f, c as u16);
+            frontier[c] = list;
+        }
+    }
+    classify(mesh);
+    land / total
+}
+
+/// Labels faces from a map: land where the map says so at the face centre; sea outside the
+/// map's bounds and where it has no data.
+pub fn from_map(mesh: &mut Mesh, map: &Map) {
+    let kinds: Vec<FaceKind> = (0..mesh.faces.len() as u32)
+        .map(|f| {
+            let (lat, lon) = lat_lon(face_centre(mesh, f));
+            match map.sample(lat, lon) {
+                Some(v) if is_land(map.kind, v) => FaceKind::Land,
+                _ => FaceKind::Sea,
+            }
+        })
+        .collect();
+    for (f, k) in mesh.faces.iter_mut().zip(kinds) {
+        f.kind = k;
+    }
+    classify(mesh);
+}
+
+/// Whether a map value means land: half white in a bitmap, at or above sea level in metres.
+pub fn is_land(kind: MapKind, value: f32) -> bool {
+    match kind {
+        MapKind::Continents => value >= 0.5,
+        MapKind::Elevation => value >= 0.0,
+    }
+}
+
+/// Types every edge from its faces and every vertex from its edges (§3.2); clears rivers.
+pub fn classify(mesh: &mut Mesh) {
+    for e in mesh.edges.iter_mut() {
+        e.kind = EdgeKind::between(mesh.faces[e.f[0] as usize].kind, mesh.faces[e.f[1] as usize].kind);
+    }
+    for v in mesh.vertices.iter_mut() {
+        v.flags = VertexFlags::empty();
+    }
+    for e in &mesh.edges {
+        for &v in &e.v {
+            mesh.vertices[v as usize].flags.insert(e.kind.flag());
+        }
+    }
+}
+
+/// Share of the surface covered by land faces.
+pub fn land_fraction(mesh: &Mesh) -> f64 {
+    let mut land = 0.0;
+    let mut total = 0.0;
+    for f in 0..mesh.faces.len() as u32 {
+        let a = mesh.face_area_vector(f).length();
+        total += a;
+        if mesh.faces[f as usize].kind == FaceKind::Land {
+            land += a;
+        }
+    }
+    land / total
+}
+
+/// Number of continents: groups of land faces joined through edges or shared vertices.
+pub fn count_continents(mesh: &Mesh) -> usize {
+    let n = mesh.vertices.len();
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let mut on_land = vec![false; n];
+    for f in &mesh.faces {
+        if f.kind == FaceKind::Land {
+            for &v in &f.v {
+                on_land[v as usize] = true;
+            }
+            let r0 = find(&mut parent, f.v[0]);
+            for &v in &f.v[1..] {
+                let r = find(&mut parent, v);
+                parent[r as usize] = r0;
+            }
+        }
+    }
+    (0..n as u32).filter(|&v| on_land[v as usize] && find(&mut parent, v) == v).count()
+}

@@ -1,0 +1,158 @@
+//! Planet generation (paper §4): base shape, continents and initial river networks.
+
+pub mod continents;
+pub mod network;
+pub mod rivers;
+pub mod shape;
+
+use crate::maps::{Map, MapKind};
+use crate::mesh::{FaceKind, Mesh};
+use crate::params::{ParamError, Params, MAX_BASE_FACES};
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+use std::time::Instant;
+
+pub use network::RiverGraph;
+
+/// Everything a planet is made from: seed, parameters and an optional map.
+#[derive(Clone, Debug)]
+pub struct PlanetSpec {
+    pub seed: u64,
+    pub params: Params,
+    pub map: Option<Arc<Map>>,
+}
+
+/// A built base mesh with its river network and statistics.
+#[derive(Clone, Debug)]
+pub struct Planet {
+    pub mesh: Mesh,
+    pub rivers: RiverGraph,
+    pub stats: Stats,
+}
+
+/// `stats.json`: the numbers that describe a built planet.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Stats {
+    pub faces: usize,
+    pub vertices: usize,
+    pub edges: usize,
+    /// Share of the sphere's area covered by land faces.
+    pub land_fraction: f64,
+    pub continents: usize,
+    pub river_edges: usize,
+    pub river_mouths: usize,
+    /// Share of the land area whose water reaches the sea through the network.
+    pub drained_fraction: f64,
+    pub monotone_violations: usize,
+    pub bytes_per_vertex: f64,
+    pub build_ms: f64,
+}
+
+/// Why a planet could not be built from its inputs.
+#[derive(Debug, thiserror::Error)]
+pub enum BuildError {
+    #[error(transparent)]
+    Params(#[from] ParamError),
+    #[error("the map leaves the planet no sea: every face is land")]
+    NoSea,
+    #[error("the map leaves the planet no land: every face is sea")]
+    NoLand,
+}
+
+impl BuildError {
+    pub fn field(&self) -> &str {
+        match self {
+            BuildError::Params(e) => &e.field,
+            BuildError::NoSea | BuildError::NoLand => "map",
+        }
+    }
+}
+
+/// Refinement edge length a map needs, in map pixels: about six pixels per face.
+const PIXELS_PER_EDGE: f64 = 9.0;
+
+/// Target edge length (m) to honour a map's detail: a few pixels per edge.
+pub fn map_edge_length(map: &Map, radius: f64) -> f64 {
+    let (_, dlat) = map.pixel_size_deg();
+    PIXELS_PER_EDGE * dlat.to_radians() * radius
+}
+
+/// Builds the base mesh of a planet (§4). `progress` receives a stage name and a fraction.
+pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> Result<Planet, BuildError> {
+    let start = Instant::now();
+    let p = &spec.params;
+    p.validate()?;
+    progress("base shape", 0.0);
+    let mut mesh = shape::octahedron(p.radius_m, spec.seed);
+    shape::refine_to(&mut mesh, p.base_faces as usize, spec.seed);
+    if let Some(map) = &spec.map {
+        let target = map_edge_length(map, p.radius_m);
+        let bounds = map.bounds;
+        shape::refine_where(&mut mesh, MAX_BASE_FACES as usize, |m, f| {
+            let face = &m.faces[f as usize];
+            m.edges[face.e[0] as usize].length as f64 > target && face_touches(m, f, &bounds)
+        });
+    }
+    progress("continents", 0.3);
+    match &spec.map {
+        Some(map) => {
+            continents::from_map(&mut mesh, map);
+            let land = mesh.faces.iter().filter(|f| f.kind == FaceKind::Land).count();
+            if land == 0 {
+                return Err(BuildError::NoLand);
+            }
+            if land == mesh.faces.len() {
+                return Err(BuildError::NoSea);
+            }
+        }
+        None => {
+            continents::grow_random(&mut mesh, p.continents, p.land_percent, spec.seed);
+        }
+    }
+    progress("rivers", 0.4);
+    let relief = spec.map.as_deref().filter(|m| m.kind == MapKind::Elevation);
+    rivers::build_rivers(&mut mesh, p, relief, spec.seed);
+    progress("finishing", 0.9);
+    rivers::finish(&mut mesh);
+    let graph = RiverGraph::from_mesh(&mesh);
+    let stats = Stats {
+        faces: mesh.faces.len(),
+        vertices: mesh.vertices.len(),
+        edges: mesh.edges.len(),
+        land_fraction: continents::land_fraction(&mesh),
+        continents: continents::count_continents(&mesh),
+        river_edges: mesh.edges.iter().filter(|e| e.kind == crate::mesh::EdgeKind::River).count(),
+        river_mouths: graph.mouths.len(),
+        drained_fraction: graph.drained_fraction(&mesh),
+        monotone_violations: graph.monotone_violations,
+        bytes_per_vertex: mesh.bytes_per_vertex(),
+        build_ms: start.elapsed().as_secs_f64() * 1000.0,
+    };
+    progress("done", 1.0);
+    Ok(Planet { mesh, rivers: graph, stats })
+}
+
+/// Whether face `f` may overlap the map bounds (its vertices' bounding box, widened by the
+/// face's size so faces straddling the edge count).
+fn face_touches(mesh: &Mesh, f: u32, bounds: &crate::maps::GeoBounds) -> bool {
+    if bounds.is_global() {
+        return true;
+    }
+    let face = &mesh.faces[f as usize];
+    let pad = (mesh.edges[face.e[0] as usize].length as f64 / mesh.radius).to_degrees();
+    let ll: Vec<(f64, f64)> = face.v.iter().map(|&v| continents::lat_lon(mesh.pos(v))).collect();
+    let (lat_lo, lat_hi) = ll.iter().fold((90.0f64, -90.0f64), |(lo, hi), &(la, _)| (lo.min(la), hi.max(la)));
+    if lat_hi + pad < bounds.south || lat_lo - pad > bounds.north {
+        return false;
+    }
+    let (lon_lo, lon_hi) = ll.iter().fold((180.0f64, -180.0f64), |(lo, hi), &(_, lo2)| (lo.min(lo2), hi.max(lo2)));
+    if lon_hi - lon_lo > 180.0 || lat_hi > 89.0 || lat_lo < -89.0 {
+        return true; // wraps the antimeridian or touches a pole: keep it simple and refine
+    }
+    let cos = lat_lo.abs().max(lat_hi.abs()).min(89.0).to_radians().cos();
+    let lon_pad = pad / cos;
+    !(lon_hi + lon_pad < bounds.west || lon_lo - lon_pad > bounds.east)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,277 @@
+//! The river network read back from a mesh (paper §4.2): downstream links, reaches between
+//! confluences, Strahler orders, drainage areas and the network's invariants.
+//!
+//! It is derived from the mesh alone — river edges and water altitudes — so it describes a base
+//! mesh and an adapted mesh alike.
+
+use crate::mesh::{EdgeKind, FaceKind, Mesh, VertexFlags, NONE};
+
+/// Downstream structure of the river edges of a mesh.
+#[derive(Clone, Debug)]
+pub struct RiverGraph {
+    /// For each vertex, the river neighbour its water flows to (`NONE` at mouths and off-river).
+    pub downstream: Vec<u32>,
+    up_offsets: Vec<u32>,
+    up: Vec<u32>,
+    /// River vertices, upstream before downstream (decreasing water altitude).
+    pub order: Vec<u32>,
+    /// Coast vertices where a river meets the sea.
+    pub mouths: Vec<u32>,
+    /// River vertices with no lower river neighbour, plus river edges that are not a downstream
+    /// link (water level equal at both ends, or a second outflow).
+    pub monotone_violations: usize,
+}
+
+/// A stretch of river between confluences, ordered downstream.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reach {
+    pub id: usize,
+    pub vertices: Vec<u32>,
+    pub downstream_id: Option<usize>,
+    pub strahler: u32,
+    pub upstream_area_m2: f64,
+    pub length_m: f64,
+}
+
+impl RiverGraph {
+    pub fn from_mesh(mesh: &Mesh) -> RiverGraph {
+        let n = mesh.vertices.len();
+        let mut downstream = vec![NONE; n];
+        let mut used = 0usize;
+        let mut river_edges = 0usize;
+        let mut violations = 0;
+        let mut mouths = Vec::new();
+        let adj = mesh.adjacency();
+        for v in 0..n as u32 {
+            let vert = &mesh.vertices[v as usize];
+            if !vert.flags.contains(VertexFlags::RIVER) {
+                continue;
+            }
+            if vert.flags.contains(VertexFlags::MOUTH) {
+                mouths.push(v);
+                continue;
+            }
+            let mut best: Option<(f32, u32)> = None;
+            for (w, e) in adj.around(v) {
+                if mesh.edges[e as usize].kind != EdgeKind::River {
+                    continue;
+                }
+                let ww = mesh.vertices[w as usize].water;
+                if ww < vert.water && best.is_none_or(|(bw, bv)| (ww, w) < (bw, bv)) {
+                    best = Some((ww, w));
+                }
+            }
+            match best {
+                Some((_, w)) => {
+                    downstream[v as usize] = w;
+                    used += 1;
+                }
+                None => violations += 1,
+            }
+        }
+        for e in &mesh.edges {
+            if e.kind == EdgeKind::River {
+                river_edges += 1;
+            }
+        }
+        violations += river_edges.saturating_sub(used);
+        let mut up_offsets = vec![0u32; n + 1];
+        for &d in &downstream {
+            if d != NONE {
+                up_offsets[d as usize + 1] += 1;
+            }
+        }
+        for i in 0..n {
+            up_offsets[i + 1] += up_offsets[i];
+        }
+        let mut fill = up_offsets.clone();
+        let mut up = vec![0u32; up_offsets[n] as usize];
+        for (v, &d) in downstream.iter().enumerate() {
+            if d != NONE {
+                up[fill[d as usize] as usize] = v as u32;
+                fill[d as usize] += 1;
+            }
+        }
+        let mut order: Vec<u32> =
+            (0..n as u32).filter(|&v| mesh.vertices[v as usize].flags.contains(VertexFlags::RIVER)).collect();
+        order.sort_by(|&a, &b| {
+            let (wa, wb) = (mesh.vertices[a as usize].water, mesh.vertices[b as usize].water);
+            wb.total_cmp(&wa).then(a.cmp(&b))
+        });
+        RiverGraph { downstream, up_offsets, up, order, mouths, monotone_violations: violations }
+    }
+
+    /// Vertices whose water flows directly into `v`.
+    pub fn upstream_of(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        let r = self.up_offsets[v as usize] as usize..self.up_offsets[v as usize + 1] as usize;
+        self.up[r].iter().copied()
+    }
+
+    pub fn tributaries(&self, v: u32) -> usize {
+        (self.up_offsets[v as usize + 1] - self.up_offsets[v as usize]) as usize
+    }
+
+    /// Area drained through each vertex: every land vertex owns a third of its land faces, and
+    /// vertices off the network drain into their lowest neighbour on it.
+    pub fn drainage_area(&self, mesh: &Mesh) -> Vec<f64> {
+        let n = mesh.vertices.len();
+        let mut own = vec![0.0f64; n];
+        for f in 0..mesh.faces.len() as u32 {
+            let face = &mesh.faces[f as usize];
+            if face.kind == FaceKind::Land {
+                let a = mesh.face_area_vector(f).length() / 3.0;
+                for &v in &face.v {
+                    own[v as usize] += a;
+                }
+            }
+        }
+        let adj = mesh.adjacency();
+        let mut acc = vec![0.0f64; n];
+        for v in 0..n as u32 {
+            let flags = mesh.vertices[v as usize].flags;
+            if flags.contains(VertexFlags::RIVER) {
+                acc[v as usize] += own[v as usize];
+            } else if let Some(t) = self.drain_target(mesh, &adj, v) {
+                acc[t as usize] += own[v as usize];
+            }
+        }
+        for &v in &self.order {
+            let d = self.downstream[v as usize];
+            if d != NONE {
+                acc[d as usize] += acc[v as usize];
+            }
+        }
+        acc
+    }
+
+    /// The river or coast neighbour with the lowest water that an off-river land vertex drains to.
+    fn drain_target(&self, mesh: &Mesh, adj: &crate::mesh::Adjacency, v: u32) -> Option<u32> {
+        let vert = &mesh.vertices[v as usize];
+        if !vert.flags.is_inland() {
+            return None;
+        }
+        adj.around(v)
+            .filter(|&(w, _)| {
+                let f = mesh.vertices[w as usize].flags;
+                f.contains(VertexFlags::RIVER) || f.contains(VertexFlags::COAST)
+            })
+            .min_by(|a, b| {
+                let (wa, wb) = (mesh.vertices[a.0 as usize].water, mesh.vertices[b.0 as usize].water);
+                wa.total_cmp(&wb).then(a.0.cmp(&b.0))
+            })
+            .map(|(w, _)| w)
+    }
+
+    /// Share of the land area (by vertex) whose water reaches the sea through the network.
+    pub fn drained_fraction(&self, mesh: &Mesh) -> f64 {
+        let n = mesh.vertices.len();
+        let mut reaches_sea = vec![false; n];
+        for &m in &self.mouths {
+            reaches_sea[m as usize] = true;
+        }
+        for &v in self.order.iter().rev() {
+            let d = self.downstream[v as usize];
+            if d != NONE && reaches_sea[d as usize] {
+                reaches_sea[v as usize] = true;
+            }
+        }
+        let adj = mesh.adjacency();
+        let (mut drained, mut total) = (0.0, 0.0);
+        for f in 0..mesh.faces.len() as u32 {
+            let face = &mesh.faces[f as usize];
+            if face.kind != FaceKind::Land {
+                continue;
+            }
+            let a = mesh.face_area_vector(f).length() / 3.0;
+            for &v in &face.v {
+                let flags = mesh.vertices[v as usize].flags;
+                let ok = if flags.contains(VertexFlags::COAST) {
+                    true
+                } else if flags.contains(VertexFlags::RIVER) {
+                    reaches_sea[v as usize]
+                } else {
+                    self.drain_target(mesh, &adj, v).is_some_and(|t| {
+                        reaches_sea[t as usize] || mesh.vertices[t as usize].flags.contains(VertexFlags::COAST)
+                    })
+                };
+                total += a;
+                if ok {
+                    drained += a;
+                }
+            }
+        }
+        if total > 0.0 {
+            drained / total
+        } else {
+            1.0
+        }
+    }
+
+    /// Splits the network into reaches between springs, confluences and mouths.
+    pub fn reaches(&self, mesh: &Mesh) -> Vec<Reach> {
+        let n = mesh.vertices.len();
+        let area = self.drainage_area(mesh);
+        let mut strahler = vec![0u32; n];
+        for &v in &self.order {
+            let mut best = 0;
+            let mut count = 0;
+            for u in self.upstream_of(v) {
+                let s = strahler[u as usize];
+                match s.cmp(&best) {
+                    std::cmp::Ordering::Greater => (best, count) = (s, 1),
+                    std::cmp::Ordering::Equal => count += 1,
+                    _ => {}
+                }
+            }
+            strahler[v as usize] = if best == 0 {
+                1
+            } else if count >= 2 {
+                best + 1
+            } else {
+                best
+            };
+        }
+        let is_start = |v: u32| {
+            let f = mesh.vertices[v as usize].flags;
+            f.contains(VertexFlags::RIVER) && !f.contains(VertexFlags::MOUTH) && self.tributaries(v) != 1
+        };
+        let mut start_id = vec![usize::MAX; n];
+        let starts: Vec<u32> = self.order.iter().copied().filter(|&v| is_start(v)).collect();
+        for (i, &s) in starts.iter().enumerate() {
+            start_id[s as usize] = i;
+        }
+        starts
+            .iter()
+            .enumerate()
+            .map(|(id, &s)| {
+                let mut path = vec![s];
+                let mut length = 0.0;
+                let mut v = s;
+                loop {
+                    let d = self.downstream[v as usize];
+                    if d == NONE {
+                        break;
+                    }
+                    length += mesh.pos(v).distance(mesh.pos(d));
+                    path.push(d);
+                    if self.tributaries(d) >= 2 || mesh.vertices[d as usize].flags.contains(VertexFlags::MOUTH) {
+                        break;
+                    }
+                    v = d;
+                }
+                let last = *path.last().unwrap_or(&s);
+                let downstream_id =
+                    (last != s && start_id[last as usize] != usize::MAX).then(|| start_id[last as usize]);
+                let own_end = path[path.len().saturating_sub(2)];
+                Reach {
+                    id,
+                    downstream_id,
+                    strahler: strahler[s as usize].max(1),
+                    upstream_area_m2: area[own_end as usize],
+                    length_m: length,
+                    vertices: path,
+                }
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,415 @@
+//! Initial river networks (paper §4.2): mouths, network growth, river altitudes (eq. 3–4),
+//! sea floor, and the mountain vertices that separate rivers (eq. 5).
+//!
+//! Growth is a best-first search from the coast. With a random planet the priorities are
+//! pseudo-random, as in the paper; with an elevation map they are the map's altitudes, so the
+//! network floods upwards from the coast and rivers settle in the map's valleys.
+
+use crate::maps::Map;
+use crate::mesh::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
+use crate::mesh::{split_kinds, EdgeKind, Mesh, SplitSite, Vertex, VertexFlags, NONE};
+use crate::params::Params;
+use crate::rng::{salt, unit, Sequence};
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+use super::continents::lat_lon;
+
+/// Sea-floor slope away from the coast for planets without a relief map (m per m).
+const SHELF_SLOPE: f64 = 0.01;
+
+/// What the river phase produced.
+#[derive(Clone, Debug, Default)]
+pub struct RiverReport {
+    pub mouths: usize,
+    pub mountains: usize,
+    /// Inland vertices that could only join the network through a third tributary.
+    pub forced_merges: usize,
+}
+
+struct Candidate {
+    key: f64,
+    key2: f64,
+    tie: u64,
+    from: u32,
+    to: u32,
+    edge: u32,
+}
+
+impl PartialEq for Candidate {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Candidate {}
+impl PartialOrd for Candidate {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Candidate {
+    /// Reversed, so the max-heap pops the lowest key first.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other.key.total_cmp(&self.key).then(other.key2.total_cmp(&self.key2)).then(other.tie.cmp(&self.tie))
+    }
+}
+
+/// Map altitude (m above sea level) at a vertex, if the relief map covers it.
+fn relief_at(relief: Option<&Map>, mesh: &Mesh, v: u32) -> Option<f64> {
+    let (lat, lon) = lat_lon(mesh.pos(v));
+    relief.and_then(|m| m.sample(lat, lon)).map(f64::from).filter(|x| x.is_finite())
+}
+
+/// Builds the river networks and assigns every altitude of the base mesh.
+pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed: u64) -> RiverReport {
+    let adj = mesh.adjacency();
+    let n = mesh.vertices.len();
+    let inland: Vec<bool> = mesh.vertices.iter().map(|v| v.flags.is_inland()).collect();
+    let coast: Vec<bool> = mesh.vertices.iter().map(|v| v.flags.contains(VertexFlags::COAST)).collect();
+    let elevation: Vec<Option<f64>> = (0..n as u32).map(|v| relief_at(relief, mesh, v)).collect();
+    let mut rng = Sequence::new(seed, 0x7177e5);
+    let mut report = RiverReport::default();
+
+    // --- Network growth ---
+    let mut downstream = vec![NONE; n];
+    let mut down_edge = vec![NONE; n];
+    let mut joined = vec![false; n];
+    let mut tributaries = vec![0u8; n];
+    let mut order: Vec<u32> = Vec::new();
+    let key_of = |rng: &mut Sequence, from: u32, to: u32| match relief {
+        Some(_) => (elevation[to as usize].unwrap_or(0.0), elevation[from as usize].unwrap_or(-1e9)),
+        None => (rng.unit(), 0.0),
+    };
+    let mut heap = BinaryHeap::new();
+    for c in (0..n as u32).filter(|&c| coast[c as usize]) {
+        for (v, e) in adj.around(c) {
+            if inland[v as usize] {
+                let (key, key2) = key_of(&mut rng, c, v);
+                heap.push(Candidate { key, key2, tie: rng.next_u64(), from: c, to: v, edge: e });
+            }
+        }
+    }
+    let has_room = |u: usize, tributaries: &[u8]| if coast[u] { tributaries[u] == 0 } else { tributaries[u] < 2 };
+    while let Some(c) = heap.pop() {
+        let v = c.to as usize;
+        if joined[v] {
+            continue;
+        }
+        let (mut u, mut e) = (c.from, c.edge);
+        if !has_room(u as usize, &tributaries) {
+            // Prefer another neighbour already in the network that still takes a tributary.
+            let alt = adj
+                .around(c.to)
+                .filter(|&(w, _)| (joined[w as usize] || coast[w as usize]) && has_room(w as usize, &tributaries))
+                .min_by(|x, y| {
+                    let kx = elevation[x.0 as usize].unwrap_or(0.0);
+                    let ky = elevation[y.0 as usize].unwrap_or(0.0);
+                    kx.total_cmp(&ky).then(x.0.cmp(&y.0))
+                });
+            match alt {
+                Some((w, we)) => (u, e) = (w, we),
+                None => continue,
+            }
+        }
+        join(v as u32, u, e, &mut downstream, &mut down_edge, &mut joined, &mut tributaries, &mut order);
+        for (w, we) in adj.around(v as u32) {
+            if inland[w as usize] && !joined[w as usize] {
+                let (key, key2) = key_of(&mut rng, v as u32, w);
+                heap.push(Candidate { key, key2, tie: rng.next_u64(), from: v as u32, to: w, edge: we });
+            }
+        }
+    }
+    // Vertices every route of which was full: join them anyway (unavoidable merges).
+    loop {
+        let mut changed = false;
+        for v in 0..n as u32 {
+            if !inland[v as usize] || joined[v as usize] {
+                continue;
+            }
+            let best = adj
+                .around(v)
+                .filter(|&(w, _)| joined[w as usize] || coast[w as usize])
+                .min_by_key(|&(w, _)| (tributaries[w as usize], w));
+            if let Some((w, we)) = best {
+                join(v, w, we, &mut downstream, &mut down_edge, &mut joined, &mut tributaries, &mut order);
+                report.forced_merges += 1;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+
+    // --- Lengths along the network ---
+    let edge_len: Vec<f64> = mesh.edges.iter().map(|e| e.length as f64).collect();
+    let len = |e: u32| edge_len[e as usize];
+    let mut l_down = vec![0.0f64; n];
+    for &v in &order {
+        l_down[v as usize] = l_down[downstream[v as usize] as usize] + len(down_edge[v as usize]);
+    }
+    let mut l_up = vec![0.0f64; n];
+    for &v in order.iter().rev() {
+        let u = downstream[v as usize] as usize;
+        l_up[u] = l_up[u].max(l_up[v as usize] + len(down_edge[v as usize]));
+    }
+
+    // --- Altitudes (eq. 3–4) ---
+    let p = params;
+    let sea = p.sea_level_m;
+    let mouth_ground = p.mouth_ground();
+    let mut gradient = vec![0.0f64; n]; // e_a per river vertex, reused by eq. 5
+    for c in (0..n).filter(|&c| coast[c]) {
+        let vert = &mut mesh.vertices[c];
+        vert.water = sea as f32;
+        if tributaries[c] > 0 {
+            vert.ground = mouth_ground as f32;
+            vert.flags.insert(VertexFlags::MOUTH | VertexFlags::RIVER);
+            report.mouths += 1;
+            gradient[c] = (p.max_river_altitude_m - mouth_ground) / (l_up[c]).max(p.min_river_length_m);
+        } else {
+            vert.ground = (sea + p.riverbed_edge_height_m * altitude_random(vert.seed)) as f32;
+        }
+    }
+    for &v in &order {
+        let (vi, u) = (v as usize, downstream[v as usize] as usize);
+        let le = len(down_edge[vi]);
+        let river_length = (l_down[vi] + l_up[vi]).max(1.0);
+        let depth = p.max_river_depth_m * l_up[vi] / river_length;
+        let (au, wu) = (mesh.vertices[u].ground as f64, mesh.vertices[u].water as f64);
+        // s_r, unless the river is so long that s_r alone would lift its spring above
+        // a_max_river: then the slope shrinks to fit (documented deviation).
+        let river_slope = p.river_slope().min(0.5 * (p.max_river_altitude_m - mouth_ground) / river_length);
+        let min_water = wu + river_slope * le;
+        let xi = unit(mesh.vertices[vi].seed, salt::RIVER);
+        gradient[vi] = (p.max_river_altitude_m - mouth_ground) / river_length;
+        let water = match elevation[vi] {
+            Some(h) if relief.is_some() => (sea + h).max(min_water),
+            _ => {
+                // Eq. 3 with xi in [0, 1): the rise per metre is at most e_a, so a spring stays
+                // below a_max_river; it is at least what keeps the water surface falling by s_r
+                // while the riverbed deepens towards the mouth (eq. 4).
+                let least = river_slope + p.max_river_depth_m / river_length;
+                let rise = least + (gradient[vi] - least).max(0.0) * xi;
+                (au + rise * le + depth).max(min_water)
+            }
+        };
+        let vert = &mut mesh.vertices[vi];
+        vert.water = water as f32;
+        vert.ground = (water - depth) as f32;
+        vert.flags.insert(VertexFlags::RIVER);
+        let ek = &mut mesh.edges[down_edge[vi] as usize];
+        ek.kind = EdgeKind::River;
+    }
+    for &v in &order {
+        let u = downstream[v as usize];
+        mesh.vertices[v as usize].flags.insert(VertexFlags::RIVER);
+        mesh.vertices[u as usize].flags.insert(VertexFlags::RIVER);
+    }
+
+    // --- Sea floor: deeper away from the coast, or the relief map's bathymetry ---
+    sea_floor(mesh, &adj, params, &elevation);
+
+    // --- Mountain vertices between rivers (eq. 5) ---
+    report.mountains = insert_mountains(mesh, params, relief, &mut gradient);
+    report
+}
+
+#[allow(clippy::too_many_arguments)]
+fn join(
+    v: u32,
+    u: u32,
+    e: u32,
+    downstream: &mut [u32],
+    down_edge: &mut [u32],
+    joined: &mut [bool],
+    tributaries: &mut [u8],
+    order: &mut Vec<u32>,
+) {
+    downstream[v as usize] = u;
+    down_edge[v as usize] = e;
+    joined[v as usize] = true;
+    tributaries[u as usize] = tributaries[u as usize].saturating_add(1);
+    order.push(v);
+}
+
+/// Sea vertices: multi-source shortest distance from the coast sets the depth.
+fn sea_floor(mesh: &mut Mesh, adj: &crate::mesh::Adjacency, p: &Params, elevation: &[Option<f64>]) {
+    let n = mesh.vertices.len();
+    let mut dist = vec![f64::INFINITY; n];
+    let mut heap = BinaryHeap::new();
+    for (v, vert) in mesh.vertices.iter().enumerate() {
+        if vert.flags.contains(VertexFlags::COAST) {
+            dist[v] = 0.0;
+            heap.push(std::cmp::Reverse((0u64, v as u32)));
+        }
+    }
+    while let Some(std::cmp::Reverse((d, v))) = heap.pop() {
+        let d = f64::from_bits(d);
+        if d > dist[v as usize] {
+            continue;
+        }
+        for (w, e) in adj.around(v) {
+            if mesh.vertices[w as usize].flags.is_pure_sea() {
+                let nd = d + mesh.edges[e as usize].length as f64;
+                if nd < dist[w as usize] {
+                    dist[w as usize] = nd;
+                    heap.push(std::cmp::Reverse((nd.to_bits(), w)));
+                }
+            }
+        }
+    }
+    let sea = p.sea_level_m;
+    for (v, vert) in mesh.vertices.iter_mut().enumerate() {
+        if !vert.flags.is_pure_sea() {
+            continue;
+        }
+        let shelf = sea - p.max_river_depth_m;
+        let d = if dist[v].is_finite() { dist[v] } else { 1.0e7 };
+        let procedural = (shelf - d * SHELF_SLOPE * (0.5 + altitude_random(vert.seed))).max(0.0);
+        let ground = match elevation[v] {
+            Some(h) if h < 0.0 => (sea + h).min(sea - 1.0),
+            _ => procedural.min(sea - 1.0),
+        };
+        vert.ground = ground as f32;
+        vert.water = sea as f32;
+    }
+}
+
+/// Inserts a continent vertex into every continent edge between river or coast vertices, and
+/// into coast edges joining two river mouths; the bisection closure splits whatever edges
+/// must go first, with the paper's split rules. Returns the number of mountain vertices made.
+fn insert_mountains(mesh: &mut Mesh, p: &Params, relief: Option<&Map>, gradient: &mut Vec<f64>) -> usize {
+    let wet = VertexFlags(VertexFlags::RIVER.0 | VertexFlags::COAST.0);
+    let targets: Vec<(u32, [u32; 2])> = (0..mesh.edges.len() as u32)
+        .filter(|&e| {
+            let edge = &mesh.edges[e as usize];
+            let [a, b] = edge.v.map(|v| mesh.vertices[v as usize].flags);
+            match edge.kind {
+                EdgeKind::Continent => a.intersects(wet) && b.intersects(wet),
+                EdgeKind::Coast => a.contains(VertexFlags::MOUTH) && b.contains(VertexFlags::MOUTH),
+                _ => false,
+            }
+        })
+        .map(|e| (e, mesh.edges[e as usize].v))
+        .collect();
+    let mut mountains = 0;
+    let mut make = |m: &Mesh, site: &SplitSite| {
+        let (v, kinds) = base_split_vertex(m, site, p, relief, gradient);
+        if v.flags.contains(VertexFlags::MOUNTAIN) {
+            mountains += 1;
+        }
+        (v, kinds)
+    };
+    for (e, ends) in targets {
+        // Skip edges the closure already split (their slot now holds a half).
+        if mesh.edges[e as usize].v == ends {
+            mesh.refine_edge(e, &mut make);
+        }
+    }
+    mountains
+}
+
+/// The new vertex of a base-mesh split: positions as in §5.3 step 5 (on the base sphere; the
+/// build lifts every vertex to its altitude at the end), altitudes by step 6 for sea, coast and
+/// river edges, and eq. 5 for continent edges, which become mountains.
+fn base_split_vertex(
+    m: &Mesh,
+    site: &SplitSite,
+    p: &Params,
+    relief: Option<&Map>,
+    gradient: &mut Vec<f64>,
+) -> (Vertex, [EdgeKind; 4]) {
+    let seed = split_seed(m, site);
+    let edge = &m.edges[site.edge as usize];
+    let (f1, f2) = (m.faces[site.f1 as usize].kind, m.faces[site.f2 as usize].kind);
+    let kinds = split_kinds(edge.kind, f1, f2);
+    let [va, vb, vt, vd] = [site.a, site.b, site.t, site.d].map(|v| &m.vertices[v as usize]);
+    let xi = altitude_random(seed);
+    let sea = p.sea_level_m;
+    let (pos, ground, water, grad, flags) = match edge.kind {
+        EdgeKind::Sea => {
+            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let mid = (va.ground + vb.ground) as f64 * 0.5;
+            let g = (mid + (xi - 0.5) * edge.length as f64 * SHELF_SLOPE * 0.5).min(sea - 1.0);
+            (pos, g, sea, 0.0, VertexFlags::empty())
+        }
+        EdgeKind::Coast => {
+            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            (pos, sea + p.riverbed_edge_height_m * xi, sea, 0.0, VertexFlags::empty())
+        }
+        EdgeKind::River => {
+            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let g = (va.ground + vb.ground) as f64 * 0.5;
+            let w = (va.water + vb.water) as f64 * 0.5;
+            let grad = (gradient[site.a as usize] + gradient[site.b as usize]) * 0.5;
+            (pos, g, w, grad, VertexFlags::RIVER)
+        }
+        EdgeKind::Continent => {
+            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let around = [(site.a, va), (site.b, vb), (site.t, vt), (site.d, vd)];
+            let wet = VertexFlags(VertexFlags::RIVER.0 | VertexFlags::COAST.0);
+            let (r, vr) = around
+                .iter()
+                .filter(|(_, v)| v.flags.intersects(wet))
+                .max_by(|x, y| x.1.ground.total_cmp(&y.1.ground).then(x.0.cmp(&y.0)))
+                .copied()
+                .unwrap_or(around[0]);
+            let unit_pos = pos.normalize() * m.radius;
+            let horizontal = |q: &Vertex| unit_pos.distance(q.p().normalize() * m.radius);
+            // Eq. 10–11: above every riverbank next to it by the riverbed rules.
+            let mut lo = f64::MIN;
+            let mut hi = p.max_mountain_altitude_m;
+            for (_, v) in around {
+                let le = horizontal(v);
+                if v.flags.intersects(wet) || v.submerged() {
+                    let bank = (v.ground as f64 + le * p.riverbed_slope())
+                        .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope());
+                    lo = lo.max(bank);
+                } else {
+                    // Eq. 12: no steeper than the maximum ground slope towards other land.
+                    lo = lo.max(v.ground as f64 - le * p.ground_slope());
+                    hi = hi.min(v.ground as f64 + le * p.ground_slope());
+                }
+            }
+            let (lat, lon) = lat_lon(pos);
+            let mapped = relief.and_then(|map| map.sample(lat, lon)).map(|h| sea + h as f64);
+            let wanted = match mapped {
+                Some(h) => h,
+                None => vr.ground as f64 + gradient[r as usize] * horizontal(vr) * xi,
+            };
+            let g = wanted.min(hi).max(lo);
+            (pos, g, g, 0.0, VertexFlags::MOUNTAIN)
+        }
+    };
+    let mut v = Vertex::new(lift(pos, m.radius, 0.0), seed);
+    v.ground = ground as f32;
+    v.water = water as f32;
+    v.flags = flags;
+    gradient.push(grad);
+    (v, kinds)
+}
+
+/// Lifts every vertex to its ground altitude (eq. 1), then refreshes lengths, normals and the
+/// downstream tangents of river vertices.
+pub fn finish(mesh: &mut Mesh) {
+    let r = mesh.radius;
+    for v in mesh.vertices.iter_mut() {
+        v.pos = lift(v.p(), r, v.ground as f64).to_array();
+    }
+    mesh.update_lengths();
+    mesh.update_normals();
+    let graph = super::network::RiverGraph::from_mesh(mesh);
+    for v in 0..mesh.vertices.len() {
+        let d = graph.downstream[v];
+        let up = graph.upstream_of(v as u32).next();
+        let t = if d != NONE {
+            tangent_towards(mesh.pos(v as u32), mesh.pos(d))
+        } else if let Some(u) = up {
+            -tangent_towards(mesh.pos(v as u32), mesh.pos(u))
+        } else {
+            continue;
+        };
+        mesh.vertices[v].normal = t.as_vec3().to_array();
+    }
+}

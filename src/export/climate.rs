@@ -1,0 +1,248 @@
+//! The 2D climate lookup of paper §3.3: ground colour from geographic latitude and altitude
+//! (metres relative to sea level), and sea colour from water depth.
+//!
+//! A land colour is made in three steps. First a *belt* colour comes from the absolute latitude,
+//! interpolated linearly between the key latitudes of the climate's row below. Then altitude
+//! tints it slowly towards bare rock (at most 35% by the tree line), blends it fully to rock above
+//! the tree line and to snow above the snow line. The snow line falls with latitude,
+//! `snow(lat) = snow_eq * (1 - (|lat| / ice_lat)^3)`: nearly flat in the tropics, 0 m at
+//! `ice_lat` and below sea level poleward of it, so ice caps are white down to the coast. The
+//! tree line lies at three quarters of the snow line's altitude. Both blends are smooth, over
+//! ±300 m (rock) and ±150 m (snow), so the texture has no hard bands.
+//!
+//! The lines sit higher than Earth's because the paper's planets are higher: with Table 2's
+//! defaults land reaches `a_max_mountain - epsilon_sea` = 10 km above sea level and half of it
+//! lies above about 4.5 km, so an Earth snow line would whiten most continents.
+//!
+//! | climate   | belts by absolute latitude (key points, °)                           | snow_eq | ice_lat |
+//! |-----------|----------------------------------------------------------------------|---------|---------|
+//! | Temperate | 0-10 tropical forest, 17-30 desert, 38 steppe, 45-58 forest,         | 7500 m  | 72°     |
+//! |           | 64-69 tundra, 72-90 ice cap                                          |         |         |
+//! | Arid      | 0 steppe, 8-42 desert, 52 steppe, 66-78 tundra, 82-90 ice cap        | 8500 m  | 82°     |
+//! | Frozen    | 0-18 forest, 28-48 tundra, 55-90 ice cap                             | 4000 m  | 55°     |
+//!
+//! Colours (sRGB): tropical forest (30, 95, 40), forest (50, 110, 45), steppe (145, 160, 85),
+//! desert (215, 190, 130), tundra (150, 150, 120), ice (235, 242, 250), rock (125, 110, 100),
+//! snow (250, 250, 252). Sea: `water_colour` runs from (120, 190, 215) at the coast to
+//! (10, 30, 90) at 6000 m depth along a square-root curve (shelves stay light).
+
+use crate::params::Climate;
+
+type Rgb = [f64; 3];
+
+const TROPICAL: Rgb = [30.0, 95.0, 40.0];
+const FOREST: Rgb = [50.0, 110.0, 45.0];
+const STEPPE: Rgb = [145.0, 160.0, 85.0];
+const DESERT: Rgb = [215.0, 190.0, 130.0];
+const TUNDRA: Rgb = [150.0, 150.0, 120.0];
+const ICE: Rgb = [235.0, 242.0, 250.0];
+const ROCK: Rgb = [125.0, 110.0, 100.0];
+const SNOW: Rgb = [250.0, 250.0, 252.0];
+const SHALLOW: Rgb = [120.0, 190.0, 215.0];
+const DEEP: Rgb = [10.0, 30.0, 90.0];
+
+/// Depth at which the sea reaches its darkest colour.
+const DEEPEST_M: f64 = 6000.0;
+/// Tree line altitude as a share of the snow line's.
+const TREE_SHARE: f64 = 0.75;
+/// Share of rock in the colour just below the tree line.
+const HIGHLAND_TINT: f64 = 0.35;
+
+/// Altitude range of `climate_texture`'s x axis.
+pub const TEXTURE_MIN_ALTITUDE_M: f64 = -500.0;
+pub const TEXTURE_MAX_ALTITUDE_M: f64 = 9000.0;
+
+struct Profile {
+    belts: &'static [(f64, Rgb)],
+    snow_eq: f64,
+    ice_lat: f64,
+}
+
+fn profile(climate: Climate) -> Profile {
+    match climate {
+        Climate::Temperate => Profile {
+            belts: &[
+                (0.0, TROPICAL),
+                (10.0, TROPICAL),
+                (17.0, DESERT),
+                (30.0, DESERT),
+                (38.0, STEPPE),
+                (45.0, FOREST),
+                (58.0, FOREST),
+                (64.0, TUNDRA),
+                (69.0, TUNDRA),
+                (72.0, ICE),
+                (90.0, ICE),
+            ],
+            snow_eq: 7500.0,
+            ice_lat: 72.0,
+        },
+        Climate::Arid => Profile {
+            belts: &[
+                (0.0, STEPPE),
+                (8.0, DESERT),
+                (42.0, DESERT),
+                (52.0, STEPPE),
+                (66.0, TUNDRA),
+                (78.0, TUNDRA),
+                (82.0, ICE),
+                (90.0, ICE),
+            ],
+            snow_eq: 8500.0,
+            ice_lat: 82.0,
+        },
+        Climate::Frozen => Profile {
+            belts: &[(0.0, FOREST), (18.0, FOREST), (28.0, TUNDRA), (48.0, TUNDRA), (55.0, ICE), (90.0, ICE)],
+            snow_eq: 4000.0,
+            ice_lat: 55.0,
+        },
+    }
+}
+
+fn mix(a: Rgb, b: Rgb, t: f64) -> Rgb {
+    let t = t.clamp(0.0, 1.0);
+    [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
+}
+
+fn smoothstep(lo: f64, hi: f64, x: f64) -> f64 {
+    let t = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+fn to_u8(c: Rgb) -> [u8; 3] {
+    c.map(|x| x.round().clamp(0.0, 255.0) as u8)
+}
+
+fn belt(belts: &[(f64, Rgb)], lat: f64) -> Rgb {
+    let lat = lat.abs().min(90.0);
+    for w in belts.windows(2) {
+        let ((l0, c0), (l1, c1)) = (w[0], w[1]);
+        if lat <= l1 {
+            return mix(c0, c1, (lat - l0) / (l1 - l0));
+        }
+    }
+    belts[belts.len() - 1].1
+}
+
+/// Snow line altitude (m relative to sea level; negative poleward of the ice-cap latitude).
+pub fn snow_line_m(climate: Climate, lat_deg: f64) -> f64 {
+    let p = profile(climate);
+    let x = lat_deg.abs().min(90.0) / p.ice_lat;
+    p.snow_eq * (1.0 - x * x * x)
+}
+
+/// Land colour for a latitude (degrees) and a ground altitude (metres relative to sea level).
+pub fn climate_colour(climate: Climate, lat_deg: f64, altitude_m: f64) -> [u8; 3] {
+    let p = profile(climate);
+    let lat = if lat_deg.is_finite() { lat_deg } else { 0.0 };
+    let alt = if altitude_m.is_finite() { altitude_m } else { 0.0 };
+    let base = belt(p.belts, lat);
+    let snow = snow_line_m(climate, lat);
+    let tree = snow * TREE_SHARE;
+    let tinted = if tree > 0.0 { mix(base, ROCK, HIGHLAND_TINT * smoothstep(0.0, tree, alt)) } else { base };
+    let rocky = mix(tinted, ROCK, smoothstep(tree - 300.0, tree + 300.0, alt));
+    to_u8(mix(rocky, SNOW, smoothstep(snow - 150.0, snow + 150.0, alt)))
+}
+
+/// Sea colour for a water depth in metres (light at the coast, dark in the deep sea).
+pub fn water_colour(depth_m: f64) -> [u8; 3] {
+    let d = if depth_m.is_finite() { depth_m.max(0.0) } else { 0.0 };
+    to_u8(mix(SHALLOW, DEEP, (d / DEEPEST_M).min(1.0).sqrt()))
+}
+
+/// The lookup as an RGBA8 texture (row-major, `width * height * 4` bytes): x runs over the
+/// altitude from -500 m to 9000 m, y over the latitude from 90°N (row 0) to 90°S, sampled at
+/// pixel centres. Alpha is 255.
+pub fn climate_texture(climate: Climate, width: u32, height: u32) -> Vec<u8> {
+    let (w, h) = (width as usize, height as usize);
+    let mut out = Vec::with_capacity(w * h * 4);
+    let span = TEXTURE_MAX_ALTITUDE_M - TEXTURE_MIN_ALTITUDE_M;
+    for y in 0..h {
+        let lat = 90.0 - (y as f64 + 0.5) * 180.0 / h as f64;
+        for x in 0..w {
+            let alt = TEXTURE_MIN_ALTITUDE_M + (x as f64 + 0.5) * span / w as f64;
+            let [r, g, b] = climate_colour(climate, lat, alt);
+            out.extend_from_slice(&[r, g, b, 255]);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: [u8; 3], b: Rgb, tol: i32) -> bool {
+        a.iter().zip(b).all(|(&x, y)| (x as i32 - y as i32).abs() <= tol)
+    }
+
+    #[test]
+    fn belts_follow_latitude() {
+        let t = Climate::Temperate;
+        assert!(close(climate_colour(t, 0.0, 100.0), TROPICAL, 1));
+        assert!(close(climate_colour(t, 25.0, 100.0), DESERT, 1));
+        assert!(close(climate_colour(t, -25.0, 100.0), DESERT, 1), "symmetric in latitude");
+        assert!(close(climate_colour(t, 50.0, 100.0), FOREST, 1));
+        assert!(close(climate_colour(t, 66.0, 10.0), TUNDRA, 1));
+        assert!(close(climate_colour(t, 85.0, 0.0), SNOW, 20) || close(climate_colour(t, 85.0, 0.0), ICE, 20));
+    }
+
+    #[test]
+    fn snow_line_falls_with_latitude_and_mountains_turn_white() {
+        for c in [Climate::Temperate, Climate::Arid, Climate::Frozen] {
+            let mut last = f64::INFINITY;
+            for lat in 0..=90 {
+                let s = snow_line_m(c, lat as f64);
+                assert!(s <= last);
+                last = s;
+            }
+            assert!(close(climate_colour(c, 0.0, 9000.0), SNOW, 1), "{c:?}");
+        }
+        // Rock between tree line and snow line at the equator.
+        assert!(close(climate_colour(Climate::Temperate, 0.0, 6500.0), ROCK, 1));
+    }
+
+    #[test]
+    fn climates_shift_the_belts() {
+        // Arid has desert where temperate has forest; frozen has ice where temperate has forest.
+        assert!(close(climate_colour(Climate::Arid, 40.0, 100.0), DESERT, 1));
+        assert!(close(climate_colour(Climate::Frozen, 60.0, 100.0), SNOW, 1));
+        assert!(close(climate_colour(Climate::Arid, 0.0, 7200.0), ROCK, 1));
+        assert!(close(climate_colour(Climate::Temperate, 0.0, 8000.0), SNOW, 1));
+        assert!(close(climate_colour(Climate::Temperate, 55.0, 100.0), FOREST, 1));
+        assert!(close(climate_colour(Climate::Temperate, 66.0, 10.0), TUNDRA, 1));
+    }
+
+    #[test]
+    fn water_darkens_with_depth() {
+        let mut last = 255 * 3 + 1;
+        for d in (0..8000).step_by(250) {
+            let c = water_colour(d as f64);
+            let sum: u32 = c.iter().map(|&x| x as u32).sum();
+            assert!(sum <= last, "depth {d}");
+            last = sum;
+        }
+        assert!(close(water_colour(0.0), SHALLOW, 0));
+        assert!(close(water_colour(10_000.0), DEEP, 0));
+        assert_eq!(water_colour(f64::NAN), water_colour(0.0));
+    }
+
+    #[test]
+    fn texture_axes() {
+        let (w, h) = (64u32, 32u32);
+        let tex = climate_texture(Climate::Temperate, w, h);
+        assert_eq!(tex.len(), (w * h * 4) as usize);
+        assert!(tex.chunks(4).all(|p| p[3] == 255));
+        let at = |x: u32, y: u32| {
+            let i = ((y * w + x) * 4) as usize;
+            [tex[i], tex[i + 1], tex[i + 2]]
+        };
+        // Row 0 is the north pole: ice at any altitude; the last column is above the snow line.
+        assert!(close(at(0, 0), ICE, 20) || close(at(0, 0), SNOW, 20));
+        assert!(close(at(w - 1, h / 2), SNOW, 1));
+        // Low altitude at 25°N (row ~ 9) is desert.
+        let y = ((90.0 - 25.0) / 180.0 * h as f64) as u32;
+        assert!(close(at(3, y), DESERT, 25));
+        assert_eq!(tex, climate_texture(Climate::Temperate, w, h));
+    }
+}

@@ -1,0 +1,202 @@
+//! Rivers as GeoJSON (RFC 7946): one Feature per reach of the river network, coordinates
+//! `[lon, lat, water_altitude_m]` ordered downstream, altitude relative to sea level.
+//!
+//! Positions are rounded to 1e-6° (about 0.1 m) and altitudes to 0.01 m. Each feature carries
+//! `id` (also as the Feature's `id`), `downstream_id` (the reach it flows into, `null` at a mouth
+//! or where the network ends), `strahler`, `upstream_area_km2` and `length_km`.
+//!
+//! **Antimeridian.** Following RFC 7946 §3.1.9, a reach that crosses ±180° is cut there into a
+//! MultiLineString: the part before the crossing ends on 180° (or -180°) and the next part starts
+//! on the opposite meridian at the same latitude and altitude, both interpolated linearly along
+//! the segment. Longitudes therefore always lie in [-180, 180]. Reaches that do not cross stay
+//! LineStrings. A reach of a single vertex (a broken network end) is written with its point
+//! repeated, so every LineString has two positions and every `downstream_id` still resolves.
+
+use crate::build::continents::lat_lon;
+use crate::build::network::Reach;
+use crate::build::RiverGraph;
+use crate::mesh::Mesh;
+use crate::params::Params;
+use serde_json::{json, Value};
+
+/// Rounds to `decimals` decimal places (dividing by the power of ten prints cleanly).
+fn round_to(x: f64, decimals: i32) -> f64 {
+    let f = 10f64.powi(decimals);
+    let r = (x * f).round() / f;
+    // Avoid "-0.0" in the output.
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
+/// Cuts a `[lon, lat, alt]` polyline where consecutive longitudes jump by more than 180°.
+pub fn split_antimeridian(points: &[[f64; 3]]) -> Vec<Vec<[f64; 3]>> {
+    let mut parts = Vec::new();
+    let mut current: Vec<[f64; 3]> = Vec::new();
+    for &p in points {
+        if let Some(&q) = current.last() {
+            let d = p[0] - q[0];
+            if d.abs() > 180.0 {
+                // Eastward across +180 when the jump is negative, westward when positive.
+                let edge = if d < 0.0 { 180.0 } else { -180.0 };
+                let unwrapped = p[0] + 2.0 * edge;
+                let t = if unwrapped != q[0] { ((edge - q[0]) / (unwrapped - q[0])).clamp(0.0, 1.0) } else { 0.0 };
+                let lat = q[1] + t * (p[1] - q[1]);
+                let alt = q[2] + t * (p[2] - q[2]);
+                current.push([edge, lat, alt]);
+                parts.push(std::mem::take(&mut current));
+                current.push([-edge, lat, alt]);
+            }
+        }
+        current.push(p);
+    }
+    if !current.is_empty() {
+        parts.push(current);
+    }
+    parts
+}
+
+fn coordinates(part: &[[f64; 3]]) -> Value {
+    let mut coords: Vec<Value> =
+        part.iter().map(|p| json!([round_to(p[0], 6), round_to(p[1], 6), round_to(p[2], 2)])).collect();
+    if coords.len() == 1 {
+        coords.push(coords[0].clone());
+    }
+    Value::Array(coords)
+}
+
+fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64) -> Value {
+    let points: Vec<[f64; 3]> = reach
+        .vertices
+        .iter()
+        .map(|&v| {
+            let (lat, lon) = lat_lon(mesh.pos(v));
+            [lon, lat, mesh.vertices[v as usize].water as f64 - sea_level]
+        })
+        .collect();
+    let parts = split_antimeridian(&points);
+    let geometry = if parts.len() == 1 {
+        json!({"type": "LineString", "coordinates": coordinates(&parts[0])})
+    } else {
+        let lines: Vec<Value> = parts.iter().map(|p| coordinates(p)).collect();
+        json!({"type": "MultiLineString", "coordinates": lines})
+    };
+    json!({
+        "type": "Feature",
+        "id": reach.id,
+        "geometry": geometry,
+        "properties": {
+            "id": reach.id,
+            "downstream_id": reach.downstream_id,
+            "strahler": reach.strahler,
+            "upstream_area_km2": round_to(reach.upstream_area_m2 / 1e6, 3),
+            "length_km": round_to(reach.length_m / 1e3, 3),
+        },
+    })
+}
+
+/// The river network as a GeoJSON FeatureCollection, one feature per reach.
+pub fn rivers_geojson(mesh: &Mesh, graph: &RiverGraph, params: &Params) -> String {
+    let features: Vec<Value> = graph.reaches(mesh).iter().map(|r| feature(mesh, r, params.sea_level_m)).collect();
+    json!({"type": "FeatureCollection", "features": features}).to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::export::test_planet;
+    use std::collections::BTreeSet;
+
+    fn lines(geometry: &Value) -> Vec<Vec<[f64; 3]>> {
+        let to_pt = |p: &Value| {
+            let a = p.as_array().unwrap();
+            assert_eq!(a.len(), 3);
+            [0, 1, 2].map(|k| a[k].as_f64().unwrap())
+        };
+        let to_line = |l: &Value| l.as_array().unwrap().iter().map(to_pt).collect::<Vec<_>>();
+        match geometry["type"].as_str().unwrap() {
+            "LineString" => vec![to_line(&geometry["coordinates"])],
+            "MultiLineString" => geometry["coordinates"].as_array().unwrap().iter().map(to_line).collect(),
+            t => panic!("unexpected geometry {t}"),
+        }
+    }
+
+    #[test]
+    fn rivers_geojson_is_a_valid_downstream_network() {
+        let planet = test_planet();
+        let params = Params::default();
+        let text = rivers_geojson(&planet.mesh, &planet.rivers, &params);
+        let doc: Value = serde_json::from_str(&text).expect("valid JSON");
+        assert_eq!(doc["type"], "FeatureCollection");
+        let features = doc["features"].as_array().unwrap();
+        let reaches = planet.rivers.reaches(&planet.mesh);
+        assert_eq!(features.len(), reaches.len());
+        assert!(!features.is_empty(), "the test planet has rivers");
+        let ids: BTreeSet<u64> = features.iter().map(|f| f["properties"]["id"].as_u64().unwrap()).collect();
+        assert_eq!(ids.len(), features.len(), "ids are unique");
+        let mut linked = 0;
+        for (f, r) in features.iter().zip(&reaches) {
+            assert_eq!(f["type"], "Feature");
+            let props = &f["properties"];
+            assert_eq!(f["id"], props["id"]);
+            match &props["downstream_id"] {
+                Value::Null => {}
+                d => {
+                    assert!(ids.contains(&d.as_u64().unwrap()), "dangling downstream_id {d}");
+                    linked += 1;
+                }
+            }
+            assert!(props["strahler"].as_u64().unwrap() >= 1);
+            assert!(props["length_km"].as_f64().unwrap() >= 0.0);
+            assert!(props["upstream_area_km2"].as_f64().unwrap() >= 0.0);
+            let parts = lines(&f["geometry"]);
+            let flat: Vec<[f64; 3]> = parts.iter().flatten().copied().collect();
+            for p in &parts {
+                assert!(p.len() >= 2);
+            }
+            for p in &flat {
+                assert!((-180.0..=180.0).contains(&p[0]) && (-90.0..=90.0).contains(&p[1]), "{p:?}");
+            }
+            for w in flat.windows(2) {
+                assert!(w[1][2] <= w[0][2], "reach {} flows uphill: {w:?}", r.id);
+            }
+            // Starts at the reach's first vertex, in sea-level altitude.
+            let v0 = &planet.mesh.vertices[r.vertices[0] as usize];
+            assert!((flat[0][2] - (v0.water as f64 - params.sea_level_m)).abs() <= 0.006);
+            let (lat, lon) = lat_lon(v0.p());
+            assert!((flat[0][1] - lat).abs() < 1e-6 && (flat[0][0] - lon).abs() < 1e-6);
+        }
+        assert!(linked > 0, "some reaches flow into others");
+    }
+
+    #[test]
+    fn rivers_geojson_is_deterministic() {
+        let planet = test_planet();
+        let params = Params::default();
+        let a = rivers_geojson(&planet.mesh, &planet.rivers, &params);
+        let graph = RiverGraph::from_mesh(&planet.mesh);
+        assert_eq!(a, rivers_geojson(&planet.mesh, &graph, &params));
+    }
+
+    #[test]
+    fn antimeridian_crossings_split_into_parts() {
+        let pts = [[178.0, 0.0, 30.0], [-178.0, 4.0, 10.0], [-176.0, 5.0, 5.0]];
+        let parts = split_antimeridian(&pts);
+        assert_eq!(parts.len(), 2);
+        assert_eq!(parts[0], vec![[178.0, 0.0, 30.0], [180.0, 2.0, 20.0]]);
+        assert_eq!(parts[1], vec![[-180.0, 2.0, 20.0], [-178.0, 4.0, 10.0], [-176.0, 5.0, 5.0]]);
+        // Westward.
+        let parts = split_antimeridian(&[[-179.0, 0.0, 2.0], [179.0, 0.0, 0.0]]);
+        assert_eq!(
+            parts,
+            vec![vec![[-179.0, 0.0, 2.0], [-180.0, 0.0, 1.0]], vec![[180.0, 0.0, 1.0], [179.0, 0.0, 0.0]]]
+        );
+        // No crossing: one part, untouched.
+        let pts = [[10.0, 1.0, 3.0], [12.0, 1.0, 2.0]];
+        assert_eq!(split_antimeridian(&pts), vec![pts.to_vec()]);
+        let json = coordinates(&[[1.0, 2.0, -0.001]]);
+        assert_eq!(json.to_string(), "[[1.0,2.0,0.0],[1.0,2.0,0.0]]");
+    }
+}

@@ -1,0 +1,275 @@
+//! glTF 2.0 binary (`.glb`) export, the JSON built with `gltf-json`.
+//!
+//! **Axes.** glTF is Y-up; the planet frame is Z-up (+Z north pole, longitude 0 on +X, 90°E on
+//! +Y). A planet-frame point `(x, y, z)` is written as glTF `(x, z, -y)`: north is glTF +Y,
+//! longitude 0 is +X, 90°E is -Z. The map is a rotation by -90° about X (determinant +1), so
+//! counter-clockwise faces stay counter-clockwise seen from outside, and it is the inverse of the
+//! Y-up to Z-up rotation 3D Tiles applies to glTF content. Units stay metres, planet-centred.
+//!
+//! [`encode_glb`] writes any number of [`GlbMesh`]es (one mesh, one primitive and one node each,
+//! all in the default scene); [`planet_glb`] uses it for the base mesh.
+
+use super::climate::{climate_colour, water_colour};
+use super::surface_normals;
+use crate::build::continents::lat_lon;
+use crate::mesh::{Mesh, VertexFlags};
+use crate::params::Params;
+use gltf_json as json;
+use json::accessor::{ComponentType, GenericComponentType, Type};
+use json::validation::{Checked::Valid, USize64};
+use std::collections::BTreeMap;
+
+/// One triangle list for [`encode_glb`], in glTF axes (see [`to_gltf_axes`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GlbMesh {
+    /// Vertex positions, metres, relative to `translation` when there is one.
+    pub positions: Vec<[f32; 3]>,
+    /// Unit normals, one per position, or empty to leave NORMAL out.
+    pub normals: Vec<[f32; 3]>,
+    /// sRGB colours with alpha, one per position, or empty to leave COLOR_0 out. Any alpha below
+    /// 255 gives the primitive a blended material.
+    pub colors: Vec<[u8; 4]>,
+    /// Triangles, counter-clockwise seen from the front.
+    pub indices: Vec<u32>,
+    /// Local origin of the positions (node translation), metres in glTF axes. Written with full
+    /// `f64` precision, so positions can stay small `f32` offsets.
+    pub translation: Option<[f64; 3]>,
+}
+
+/// Planet frame (Z-up) to glTF axes (Y-up): `(x, y, z) -> (x, z, -y)`.
+#[inline]
+pub fn to_gltf_axes(p: [f64; 3]) -> [f64; 3] {
+    [p[0], p[2], -p[1]]
+}
+
+/// Colour of river vertices in the planet model.
+const RIVER_RGB: [u8; 3] = [40, 90, 185];
+
+/// The planet's base mesh as a `.glb`: one mesh, one primitive, POSITION / NORMAL / COLOR_0 and
+/// u32 indices, coloured by vertex type and altitude with the climate lookup.
+pub fn planet_glb(mesh: &Mesh, params: &Params) -> Vec<u8> {
+    encode_glb(&[planet_mesh(mesh, params)])
+}
+
+/// The base mesh as a [`GlbMesh`] (glTF axes, no translation).
+pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
+    let normals = surface_normals(mesh);
+    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
+    let sea = params.sea_level_m;
+    let mut out = GlbMesh {
+        positions: Vec::with_capacity(mesh.vertices.len()),
+        normals: Vec::with_capacity(mesh.vertices.len()),
+        colors: Vec::with_capacity(mesh.vertices.len()),
+        indices: Vec::with_capacity(mesh.faces.len() * 3),
+        translation: None,
+    };
+    for (v, n) in mesh.vertices.iter().zip(&normals) {
+        out.positions.push(to_gltf_axes(v.pos).map(|x| x as f32));
+        let n = to_gltf_axes(n.to_array()).map(|x| x as f32);
+        let len = n.iter().map(|x| x * x).sum::<f32>().sqrt();
+        out.normals.push(if len > 0.0 { n.map(|x| x / len) } else { [0.0, 1.0, 0.0] });
+        let [r, g, b] = if v.flags.contains(VertexFlags::RIVER) {
+            RIVER_RGB
+        } else if !v.flags.intersects(land) {
+            water_colour(sea - v.ground as f64)
+        } else {
+            climate_colour(params.climate, lat_lon(v.p()).0, v.ground as f64 - sea)
+        };
+        out.colors.push([r, g, b, 255]);
+    }
+    for f in &mesh.faces {
+        out.indices.extend_from_slice(&f.v);
+    }
+    out
+}
+
+fn push_view(
+    root: &mut json::Root,
+    bin: &mut Vec<u8>,
+    bytes: Vec<u8>,
+    target: json::buffer::Target,
+) -> json::Index<json::buffer::View> {
+    let offset = bin.len();
+    debug_assert_eq!(offset % 4, 0);
+    bin.extend_from_slice(&bytes);
+    root.push(json::buffer::View {
+        buffer: json::Index::new(0),
+        byte_length: USize64::from(bytes.len()),
+        byte_offset: Some(USize64::from(offset)),
+        byte_stride: None,
+        target: Some(Valid(target)),
+        extensions: None,
+        extras: Default::default(),
+    })
+}
+
+fn accessor(
+    view: json::Index<json::buffer::View>,
+    count: usize,
+    component: ComponentType,
+    type_: Type,
+    normalized: bool,
+    bounds: Option<(serde_json::Value, serde_json::Value)>,
+) -> json::Accessor {
+    let (min, max) = bounds.map_or((None, None), |(a, b)| (Some(a), Some(b)));
+    json::Accessor {
+        buffer_view: Some(view),
+        byte_offset: None,
+        count: USize64::from(count),
+        component_type: Valid(GenericComponentType(component)),
+        extensions: None,
+        extras: Default::default(),
+        type_: Valid(type_),
+        min,
+        max,
+        normalized,
+        sparse: None,
+    }
+}
+
+fn vec3_bytes(v: &[[f32; 3]]) -> Vec<u8> {
+    v.iter().flatten().flat_map(|x| x.to_le_bytes()).collect()
+}
+
+fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
+    use json::material::{AlphaMode, PbrMetallicRoughness, StrengthFactor};
+    root.push(json::Material {
+        alpha_mode: Valid(if blend { AlphaMode::Blend } else { AlphaMode::Opaque }),
+        pbr_metallic_roughness: PbrMetallicRoughness {
+            metallic_factor: StrengthFactor(0.0),
+            roughness_factor: StrengthFactor(if blend { 0.2 } else { 0.9 }),
+            ..Default::default()
+        },
+        ..Default::default()
+    })
+}
+
+/// Encodes meshes as one `.glb`: one glTF mesh (one TRIANGLES primitive), one node and one set of
+/// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene. Meshes
+/// without positions or indices are left out (no meshes at all: no scene, no buffer). Panics if `normals` or `colors` is neither empty nor as long as
+/// `positions`, or if an index is out of range.
+pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
+    use json::buffer::Target::{ArrayBuffer, ElementArrayBuffer};
+    let mut root = json::Root {
+        asset: json::Asset {
+            generator: Some("riverworld".to_string()),
+            version: "2.0".to_string(),
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let mut bin = Vec::new();
+    let mut materials: [Option<json::Index<json::Material>>; 2] = [None, None];
+    let mut nodes = Vec::new();
+    let mut translations = Vec::new();
+    for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
+        let n = m.positions.len();
+        assert!(m.normals.is_empty() || m.normals.len() == n, "normals must match positions");
+        assert!(m.colors.is_empty() || m.colors.len() == n, "colors must match positions");
+        assert!(m.indices.iter().all(|&i| (i as usize) < n), "index out of range");
+        let mut lo = [f32::INFINITY; 3];
+        let mut hi = [f32::NEG_INFINITY; 3];
+        for p in &m.positions {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let bounds = (serde_json::json!(lo.map(f64::from)), serde_json::json!(hi.map(f64::from)));
+        let mut attributes = BTreeMap::new();
+        let view = push_view(&mut root, &mut bin, vec3_bytes(&m.positions), ArrayBuffer);
+        let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, Some(bounds)));
+        attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
+        if !m.normals.is_empty() {
+            let view = push_view(&mut root, &mut bin, vec3_bytes(&m.normals), ArrayBuffer);
+            let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, None));
+            attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
+        }
+        if !m.colors.is_empty() {
+            let bytes = m.colors.iter().flatten().copied().collect();
+            let view = push_view(&mut root, &mut bin, bytes, ArrayBuffer);
+            let acc = root.push(accessor(view, n, ComponentType::U8, Type::Vec4, true, None));
+            attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
+        }
+        let bytes = m.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+        let view = push_view(&mut root, &mut bin, bytes, ElementArrayBuffer);
+        let indices = root.push(accessor(view, m.indices.len(), ComponentType::U32, Type::Scalar, false, None));
+        let blend = m.colors.iter().any(|c| c[3] < 255);
+        let mat = match materials[blend as usize] {
+            Some(i) => i,
+            None => *materials[blend as usize].insert(material(&mut root, blend)),
+        };
+        let primitive = json::mesh::Primitive {
+            attributes,
+            extensions: None,
+            extras: Default::default(),
+            indices: Some(indices),
+            material: Some(mat),
+            mode: Valid(json::mesh::Mode::Triangles),
+            targets: None,
+        };
+        let mesh = root.push(json::Mesh {
+            extensions: None,
+            extras: Default::default(),
+            primitives: vec![primitive],
+            weights: None,
+        });
+        translations.push(m.translation);
+        nodes.push(root.push(json::Node {
+            mesh: Some(mesh),
+            translation: m.translation.map(|t| t.map(|x| x as f32)),
+            ..Default::default()
+        }));
+    }
+    if !bin.is_empty() {
+        root.push(json::Buffer {
+            byte_length: USize64::from(bin.len()),
+            uri: None,
+            extensions: None,
+            extras: Default::default(),
+        });
+    }
+    if !nodes.is_empty() {
+        let scene = root.push(json::Scene { extensions: None, extras: Default::default(), nodes });
+        root.scene = Some(scene);
+    }
+
+    let mut value = serde_json::to_value(&root).expect("glTF JSON serialises");
+    // gltf-json holds translations as f32 (~0.5 m at planet scale): write the f64 values.
+    for (i, t) in translations.iter().enumerate() {
+        if let Some(t) = t {
+            value["nodes"][i]["translation"] = serde_json::json!(t);
+        }
+    }
+    let json_bytes = serde_json::to_vec(&value).expect("glTF JSON serialises");
+    glb_container(json_bytes, bin)
+}
+
+/// GLB container: 12-byte header, JSON chunk padded with spaces, BIN chunk padded with zeros.
+fn glb_container(mut json_bytes: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
+    while !json_bytes.len().is_multiple_of(4) {
+        json_bytes.push(b' ');
+    }
+    while !bin.len().is_multiple_of(4) {
+        bin.push(0);
+    }
+    let bin_chunk = if bin.is_empty() { 0 } else { 8 + bin.len() };
+    let total = 12 + 8 + json_bytes.len() + bin_chunk;
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&(json_bytes.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(&json_bytes);
+    if !bin.is_empty() {
+        out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+        out.extend_from_slice(b"BIN\0");
+        out.extend_from_slice(&bin);
+    }
+    out
+}
+
+#[cfg(test)]
+#[path = "glb_tests.rs"]
+mod tests;

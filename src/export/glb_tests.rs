@@ -1,0 +1,197 @@
+use super::*;
+use crate::export::test_planet;
+use gltf_json::validation::Validate;
+
+struct Parsed {
+    root: json::Root,
+    value: serde_json::Value,
+    bin: Vec<u8>,
+}
+
+fn u32_at(b: &[u8], at: usize) -> u32 {
+    u32::from_le_bytes(b[at..at + 4].try_into().unwrap())
+}
+
+/// Checks the container (header, chunk types, lengths, alignment) and parses the JSON chunk.
+fn parse(glb: &[u8]) -> Parsed {
+    assert_eq!(&glb[0..4], b"glTF");
+    assert_eq!(u32_at(glb, 4), 2);
+    assert_eq!(u32_at(glb, 8) as usize, glb.len());
+    let json_len = u32_at(glb, 12) as usize;
+    assert_eq!(&glb[16..20], b"JSON");
+    assert_eq!(json_len % 4, 0, "JSON chunk is 4-byte aligned");
+    let json_bytes = &glb[20..20 + json_len];
+    assert!(json_bytes.ends_with(b"}") || json_bytes.ends_with(b" "));
+    let mut bin = Vec::new();
+    let rest = 20 + json_len;
+    if rest < glb.len() {
+        assert_eq!(rest % 4, 0);
+        let bin_len = u32_at(glb, rest) as usize;
+        assert_eq!(&glb[rest + 4..rest + 8], b"BIN\0");
+        assert_eq!(bin_len % 4, 0, "BIN chunk is 4-byte aligned");
+        assert_eq!(rest + 8 + bin_len, glb.len());
+        bin = glb[rest + 8..].to_vec();
+    }
+    let root = json::Root::from_slice(json_bytes).expect("JSON chunk parses as glTF");
+    let mut errors = Vec::new();
+    root.validate(&root, json::Path::new, &mut |path, err| errors.push(format!("{}: {err:?}", path())));
+    assert!(errors.is_empty(), "{errors:?}");
+    let value = serde_json::from_slice(json_bytes).unwrap();
+    Parsed { root, value, bin }
+}
+
+/// Bytes an accessor covers.
+fn accessor_bytes<'a>(p: &'a Parsed, acc: &json::Accessor, elem: usize) -> &'a [u8] {
+    let view = &p.root.buffer_views[acc.buffer_view.unwrap().value()];
+    let start = view.byte_offset.map_or(0, |o| o.0 as usize) + acc.byte_offset.map_or(0, |o| o.0 as usize);
+    let len = acc.count.0 as usize * elem;
+    assert!(start + len <= (view.byte_offset.map_or(0, |o| o.0) + view.byte_length.0) as usize);
+    &p.bin[start..start + len]
+}
+
+fn f32s(b: &[u8]) -> Vec<f32> {
+    b.chunks(4).map(|c| f32::from_le_bytes(c.try_into().unwrap())).collect()
+}
+
+fn attribute(p: &Parsed, prim: &json::mesh::Primitive, s: json::mesh::Semantic) -> json::Accessor {
+    let i = prim.attributes[&Valid(s)];
+    p.root.accessors[i.value()].clone()
+}
+
+#[test]
+fn planet_glb_is_valid_and_matches_the_mesh() {
+    let planet = test_planet();
+    let (mesh, params) = (&planet.mesh, &Params::default());
+    let glb = planet_glb(mesh, params);
+    let p = parse(&glb);
+    assert_eq!(p.root.asset.generator.as_deref(), Some("riverworld"));
+    assert_eq!(p.root.asset.version, "2.0");
+    assert_eq!(p.root.meshes.len(), 1);
+    assert_eq!(p.root.buffers[0].byte_length.0 as usize, p.bin.len());
+    let prim = &p.root.meshes[0].primitives[0];
+    assert_eq!(prim.mode, Valid(json::mesh::Mode::Triangles));
+    let n = mesh.vertices.len();
+
+    let pos_acc = attribute(&p, prim, json::mesh::Semantic::Positions);
+    assert_eq!(pos_acc.count.0 as usize, n);
+    let pos = f32s(accessor_bytes(&p, &pos_acc, 12));
+    let (min, max) = (pos_acc.min.clone().unwrap(), pos_acc.max.clone().unwrap());
+    for k in 0..3 {
+        let vals = pos.iter().skip(k).step_by(3);
+        let lo = vals.clone().fold(f32::INFINITY, |a, &b| a.min(b));
+        let hi = vals.fold(f32::NEG_INFINITY, |a, &b| a.max(b));
+        assert_eq!(min[k].as_f64().unwrap(), lo as f64, "min is exact");
+        assert_eq!(max[k].as_f64().unwrap(), hi as f64, "max is exact");
+    }
+
+    let nrm_acc = attribute(&p, prim, json::mesh::Semantic::Normals);
+    assert_eq!(nrm_acc.count.0 as usize, n);
+    for c in f32s(accessor_bytes(&p, &nrm_acc, 12)).chunks(3) {
+        let len = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+        assert!((len - 1.0).abs() < 1e-5, "normal length {len}");
+    }
+    let col_acc = attribute(&p, prim, json::mesh::Semantic::Colors(0));
+    assert_eq!(col_acc.count.0 as usize, n);
+    assert!(col_acc.normalized);
+    assert!(matches!(col_acc.component_type, Valid(GenericComponentType(ComponentType::U8))));
+
+    let idx_acc = &p.root.accessors[prim.indices.unwrap().value()];
+    assert_eq!(idx_acc.count.0 as usize, mesh.faces.len() * 3);
+    let idx: Vec<u32> =
+        accessor_bytes(&p, idx_acc, 4).chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+    assert!(idx.iter().all(|&i| (i as usize) < n));
+
+    // Winding: every triangle's normal points away from the planet centre in glTF axes too.
+    let at = |i: u32| glam::Vec3::from_slice(&pos[i as usize * 3..i as usize * 3 + 3]).as_dvec3();
+    for t in idx.chunks(3) {
+        let (a, b, c) = (at(t[0]), at(t[1]), at(t[2]));
+        assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "face {t:?} winds inwards");
+    }
+}
+
+#[test]
+fn axes_put_the_north_pole_on_plus_y() {
+    let planet = test_planet();
+    let mesh = &planet.mesh;
+    let glb = planet_glb(mesh, &Params::default());
+    let p = parse(&glb);
+    let prim = &p.root.meshes[0].primitives[0];
+    let pos = f32s(accessor_bytes(&p, &attribute(&p, prim, json::mesh::Semantic::Positions), 12));
+    let find = |dir: glam::DVec3| {
+        (0..mesh.vertices.len())
+            .max_by(|&a, &b| {
+                mesh.pos(a as u32).normalize().dot(dir).total_cmp(&mesh.pos(b as u32).normalize().dot(dir))
+            })
+            .unwrap()
+    };
+    let north = find(glam::DVec3::Z);
+    assert!(mesh.pos(north as u32).normalize().z > 0.999_999);
+    let g = &pos[north * 3..north * 3 + 3];
+    let r = mesh.pos(north as u32).length() as f32;
+    assert!((g[1] - r).abs() < 1.0 && g[0].abs() < 1.0 && g[2].abs() < 1.0, "{g:?}");
+    // 90°E (+Y in the planet frame) goes to glTF -Z.
+    let east = find(glam::DVec3::Y);
+    let g = &pos[east * 3..east * 3 + 3];
+    assert!(g[2] < -0.999 * mesh.pos(east as u32).length() as f32, "{g:?}");
+    assert_eq!(to_gltf_axes([1.0, 2.0, 3.0]), [1.0, 3.0, -2.0]);
+}
+
+#[test]
+fn planet_glb_is_deterministic() {
+    let planet = test_planet();
+    let params = Params::default();
+    let a = planet_glb(&planet.mesh, &params);
+    assert_eq!(a, planet_glb(&planet.mesh, &params));
+    assert_eq!(a, planet_glb(&planet.mesh.clone(), &params.clone()));
+}
+
+#[test]
+fn encode_glb_writes_several_nodes_with_precise_translations() {
+    let tri = GlbMesh {
+        positions: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        normals: vec![[0.0, 0.0, 1.0]; 3],
+        colors: vec![[10, 20, 30, 255]; 3],
+        indices: vec![0, 1, 2],
+        translation: Some([6_371_000.125, -12.5, 3.25]),
+    };
+    let water = GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..tri.clone() };
+    let glb = encode_glb(&[tri.clone(), GlbMesh::default(), water]);
+    let p = parse(&glb);
+    assert_eq!(p.root.nodes.len(), 2, "the empty mesh is left out");
+    assert_eq!(p.root.meshes.len(), 2);
+    assert_eq!(p.root.scenes[0].nodes.len(), 2);
+    assert_eq!(p.root.scene.map(|s| s.value()), Some(0));
+    let t = &p.value["nodes"][0]["translation"];
+    assert_eq!(t[0].as_f64(), Some(6_371_000.125), "f64 precision kept: {t}");
+    assert!(p.value["nodes"][1].get("translation").is_none());
+    let m0 = &p.root.materials[p.root.meshes[0].primitives[0].material.unwrap().value()];
+    let m1 = &p.root.materials[p.root.meshes[1].primitives[0].material.unwrap().value()];
+    assert_eq!(m0.alpha_mode, Valid(json::material::AlphaMode::Opaque));
+    assert_eq!(m1.alpha_mode, Valid(json::material::AlphaMode::Blend));
+    assert!(!p.root.meshes[1].primitives[0].attributes.contains_key(&Valid(json::mesh::Semantic::Normals)));
+    assert_eq!(
+        glb,
+        encode_glb(&[
+            tri,
+            GlbMesh::default(),
+            GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..encode_sample() }
+        ])
+    );
+
+    let empty = parse(&encode_glb(&[]));
+    assert!(empty.bin.is_empty() && empty.root.buffers.is_empty() && empty.root.scenes.is_empty());
+}
+
+fn encode_sample() -> GlbMesh {
+    GlbMesh {
+        positions: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        indices: vec![0, 1, 2],
+        ..Default::default()
+    }
+}
+
+#[test]
+#[should_panic(expected = "index out of range")]
+fn encode_glb_rejects_bad_indices() {
+    encode_glb(&[GlbMesh { indices: vec![0, 1, 3], ..encode_sample() }]);
+}

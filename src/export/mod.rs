@@ -1,0 +1,61 @@
+//! Exports (paper §3.3 colours): glTF binary, GeoJSON rivers, equirectangular rasters.
+//!
+//! Every export is deterministic: the same mesh and parameters give byte-identical output (no
+//! timestamps, no hash-map iteration order, parallel work written to fixed slots).
+//!
+//! Altitudes in every export are metres relative to sea level (`ground - params.sea_level_m`),
+//! not to the base sphere the mesh stores them against.
+
+pub mod climate;
+pub mod geojson;
+pub mod glb;
+pub mod preview;
+pub mod raster;
+
+pub use climate::{climate_colour, climate_texture, water_colour};
+pub use geojson::rivers_geojson;
+pub use glb::{encode_glb, planet_glb, to_gltf_axes, GlbMesh};
+pub use raster::{elevation_tiff, landmask_png, preview_png, SphereRaster};
+
+use crate::mesh::Mesh;
+use glam::DVec3;
+
+/// Unit surface normal of every vertex: the area-weighted sum of its faces' normals.
+///
+/// The mesh's stored `normal` holds a downstream tangent for river vertices, so exports always
+/// recompute normals from the faces.
+pub fn surface_normals(mesh: &Mesh) -> Vec<DVec3> {
+    let mut acc = vec![DVec3::ZERO; mesh.vertices.len()];
+    for f in 0..mesh.faces.len() as u32 {
+        let n = mesh.face_area_vector(f);
+        for &v in &mesh.faces[f as usize].v {
+            acc[v as usize] += n;
+        }
+    }
+    acc.iter()
+        .zip(&mesh.vertices)
+        .map(|(n, v)| {
+            let n = n.normalize_or_zero();
+            if n == DVec3::ZERO {
+                v.p().normalize_or_zero()
+            } else {
+                n
+            }
+        })
+        .collect()
+}
+
+/// A small planet shared by the export tests (built once).
+#[cfg(test)]
+pub(crate) fn test_planet() -> &'static crate::build::Planet {
+    use std::sync::OnceLock;
+    static PLANET: OnceLock<crate::build::Planet> = OnceLock::new();
+    PLANET.get_or_init(|| {
+        let spec = crate::build::PlanetSpec {
+            seed: 1,
+            params: crate::params::Params { base_faces: 2000, ..Default::default() },
+            map: None,
+        };
+        crate::build::build_planet(&spec, &mut |_, _| {}).expect("test planet builds")
+    })
+}

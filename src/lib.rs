@@ -1,0 +1,12 @@
+//! riverworld: procedural planets with river networks after Derzapf et al., *River Networks for
+//! Instant Procedural Planets* (2011). Data flows one way:
+//! `maps -> build -> mesh -> adapt -> export / render -> server`.
+
+pub mod bench;
+pub mod build;
+pub mod export;
+pub mod generate;
+pub mod maps;
+pub mod mesh;
+pub mod params;
+pub mod rng;

@@ -1,0 +1,168 @@
+//! The `riverworld` command line.
+
+use clap::{Parser, Subcommand};
+use riverworld::generate::{self, GenerateError, MapSource};
+use riverworld::maps::{GeoBounds, MapKind, MapLimits};
+use riverworld::params::PlanetRequest;
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "riverworld",
+    version,
+    about = "Procedural planets with realistic river networks (Derzapf et al. 2011)"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Options that define a planet, shared by the commands that build one.
+#[derive(clap::Args, Clone, Debug)]
+struct PlanetArgs {
+    /// Planet seed (overrides the seed in --params).
+    #[arg(long)]
+    seed: Option<u64>,
+    /// A map: 8-bit PNG continent bitmap (white = land), 8/16-bit PNG elevation (with
+    /// --map-range) or GeoTIFF elevation in metres. Equirectangular, row 0 = north edge.
+    #[arg(long)]
+    map: Option<PathBuf>,
+    /// How to read --map [default: elevation for GeoTIFF or when --map-range is given, else continents].
+    #[arg(long, value_parser = parse_kind)]
+    map_kind: Option<MapKind>,
+    /// Metres of the darkest and brightest PNG elevation values, "MIN_M,MAX_M".
+    #[arg(long, value_parser = parse_range, allow_hyphen_values = true)]
+    map_range: Option<(f64, f64)>,
+    /// Bounds of a regional PNG map in degrees, "WEST,SOUTH,EAST,NORTH" [default: the whole globe;
+    /// GeoTIFFs carry their own]. Outside a regional map the planet is sea.
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    map_bounds: Option<GeoBounds>,
+    /// JSON file {"seed": N, "params": {...}} with the planet parameters (paper Table 2).
+    #[arg(long)]
+    params: Option<PathBuf>,
+    /// Faces of the base shape (overrides params.base_faces). A map adds detail inside its bounds.
+    #[arg(long)]
+    faces: Option<u32>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Build a planet and write planet.glb, rivers.geojson, landmask.png, elevation.tif,
+    /// preview.png and stats.json.
+    Generate {
+        #[command(flatten)]
+        planet: PlanetArgs,
+        /// Output directory.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Width of the equirectangular rasters (height is half).
+        #[arg(long, default_value_t = 1024, value_parser = clap::value_parser!(u32).range(2..=16384))]
+        raster_width: u32,
+    },
+    /// Time planet builds and print a table (base mesh + continents + rivers).
+    Bench {
+        /// Directory with the Earth maps.
+        #[arg(long, default_value = "maps")]
+        maps: PathBuf,
+        /// Runs per case (the median is reported).
+        #[arg(long, default_value_t = 5)]
+        runs: usize,
+        /// Only the small cases.
+        #[arg(long)]
+        quick: bool,
+    },
+}
+
+fn parse_kind(s: &str) -> Result<MapKind, String> {
+    s.parse().map_err(|e: riverworld::maps::MapError| e.to_string())
+}
+fn parse_range(s: &str) -> Result<(f64, f64), String> {
+    generate::parse_range(s).map_err(|e| e.to_string())
+}
+fn parse_bounds(s: &str) -> Result<GeoBounds, String> {
+    GeoBounds::parse(s).map_err(|e| e.to_string())
+}
+
+impl PlanetArgs {
+    fn spec(&self) -> Result<riverworld::build::PlanetSpec, GenerateError> {
+        let mut req = match &self.params {
+            Some(path) => generate::load_request(path)?,
+            None => PlanetRequest::default(),
+        };
+        if let Some(seed) = self.seed {
+            req.seed = seed;
+        }
+        if let Some(faces) = self.faces {
+            req.params.base_faces = faces;
+        }
+        req.params.validate()?;
+        let map = match &self.map {
+            Some(path) => {
+                let src = MapSource {
+                    path: path.clone(),
+                    kind: self.map_kind,
+                    range_m: self.map_range,
+                    bounds: self.map_bounds,
+                };
+                Some(generate::load_map(&src, &MapLimits::default())?)
+            }
+            None => None,
+        };
+        Ok(generate::spec(req, map))
+    }
+}
+
+fn progress_bar() -> Option<indicatif::ProgressBar> {
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(1000);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{spinner} {msg:12} [{bar:40}] {percent:>3}% {elapsed}")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    Some(bar)
+}
+
+fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -> Result<(), GenerateError> {
+    let spec = planet.spec()?;
+    let bar = progress_bar();
+    let mut report = |stage: &str, f: f32| {
+        if let Some(b) = &bar {
+            b.set_message(stage.to_string());
+            b.set_position((f * 1000.0) as u64);
+        }
+    };
+    let built = generate::build(&spec, &mut report)?;
+    report("writing", 0.95);
+    let files = generate::outputs(&built, &spec, raster_width);
+    generate::write_outputs(out, &files)?;
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    println!("{}", serde_json::to_string_pretty(&built.stats).expect("stats serialise"));
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Generate { planet, out, raster_width } => match run_generate(&planet, &out, raster_width) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                match e {
+                    GenerateError::Write { .. } => ExitCode::FAILURE,
+                    _ => ExitCode::from(2),
+                }
+            }
+        },
+        Command::Bench { maps, runs, quick } => {
+            riverworld::bench::run(&maps, runs.max(1), quick);
+            ExitCode::SUCCESS
+        }
+    }
+}

@@ -1,0 +1,278 @@
+//! The planet mesh (paper §3, Table 3): vertex, edge and face buffers, their types (§3.2), and the
+//! two atomic operations, edge split and vertex collapse (Figure 2).
+//!
+//! Refinement follows newest-vertex bisection: every face stores its newest vertex in `v[0]`, and the
+//! edge opposite it (`e[0]`) is the face's refinement edge — the edge with the lowest split level in
+//! the face, as §3.1 demands. An edge may be split only when it is the refinement edge of both of its
+//! faces, so each split always sees the same four vertices `v_ev1, v_ev2, v_t, v_d`. That is what
+//! makes the terrain reproducible whatever the order of refinement.
+//!
+//! Positions are `f64` metres in the planet-centred frame (+Z = north pole, longitude 0 on +X): at
+//! Earth radius an `f64` resolves ~1 nm, so the paper's 1 cm minimum edge length is far above the
+//! rounding error.
+
+mod collapse;
+mod kinds;
+mod split;
+pub mod terrain;
+pub mod validate;
+
+pub use collapse::CollapseSite;
+pub use kinds::{EdgeKind, FaceKind, VertexFlags};
+pub use split::{split_kinds, Split, SplitSite};
+
+use glam::DVec3;
+
+/// Marks an absent index.
+pub const NONE: u32 = u32::MAX;
+
+/// One vertex (Table 3, "active vertices").
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Position, planet-centred metres.
+    pub pos: [f64; 3],
+    /// Unit normal; for river vertices the unit tangent pointing downstream (§4.2).
+    pub normal: [f32; 3],
+    /// Ground altitude above the base sphere, metres.
+    pub ground: f32,
+    /// Water altitude above the base sphere, metres (equals `ground` where dry).
+    pub water: f32,
+    /// An incident edge. For a vertex made by a split this is the half `e1` of the split edge,
+    /// which tells a collapse which two edges to merge.
+    pub edge: u32,
+    /// Longest incident edge, metres (used by the refinement criterion `l/d > c`).
+    pub max_len: f32,
+    /// Per-vertex random seed; a split vertex gets `s_ev1 + s_ev2` (§3.1).
+    pub seed: u32,
+    /// Types of the incident edges when the vertex was made (§3.2).
+    pub flags: VertexFlags,
+    /// 0 for base-mesh vertices (never collapsed), 1 for vertices made by adaption.
+    pub level: u8,
+    pub _pad: [u8; 2],
+}
+
+/// One edge (Table 3, "active edges").
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Edge {
+    /// End points. `f[0]` is the face that walks `v[0] -> v[1]` counter-clockwise.
+    pub v: [u32; 2],
+    /// The two faces: left of `v[0] -> v[1]`, then right.
+    pub f: [u32; 2],
+    /// Length, metres.
+    pub length: f32,
+    /// Split level: incremented by each split, decremented by each collapse.
+    pub level: u16,
+    pub kind: EdgeKind,
+    pub _pad: u8,
+}
+
+/// One triangle (Table 3, "active faces").
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Face {
+    /// Corners, counter-clockwise seen from outside the planet; `v[0]` is the newest vertex.
+    pub v: [u32; 3],
+    /// `e[i]` is the edge opposite `v[i]`; `e[0]` is the refinement edge.
+    pub e: [u32; 3],
+    pub kind: FaceKind,
+    pub _pad: [u8; 3],
+}
+
+/// The planet mesh: flat buffers, indices are `u32`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    pub radius: f64,
+    pub vertices: Vec<Vertex>,
+    pub edges: Vec<Edge>,
+    pub faces: Vec<Face>,
+}
+
+impl Vertex {
+    pub fn new(pos: DVec3, seed: u32) -> Vertex {
+        Vertex {
+            pos: pos.to_array(),
+            normal: [0.0; 3],
+            ground: 0.0,
+            water: 0.0,
+            edge: NONE,
+            max_len: 0.0,
+            seed,
+            flags: VertexFlags::empty(),
+            level: 0,
+            _pad: [0; 2],
+        }
+    }
+    #[inline]
+    pub fn p(&self) -> DVec3 {
+        DVec3::from_array(self.pos)
+    }
+    /// Whether water stands above the ground here.
+    #[inline]
+    pub fn submerged(&self) -> bool {
+        self.water > self.ground
+    }
+}
+
+impl Edge {
+    #[inline]
+    pub fn other(&self, v: u32) -> u32 {
+        if self.v[0] == v {
+            self.v[1]
+        } else {
+            self.v[0]
+        }
+    }
+}
+
+impl Face {
+    /// Slot (0..3) of vertex `v` in this face.
+    #[inline]
+    pub fn slot(&self, v: u32) -> Option<usize> {
+        self.v.iter().position(|&x| x == v)
+    }
+}
+
+/// Bytes one vertex, one edge and one face take in the buffers.
+pub const VERTEX_BYTES: usize = std::mem::size_of::<Vertex>();
+pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
+pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
+
+impl Mesh {
+    pub fn pos(&self, v: u32) -> DVec3 {
+        self.vertices[v as usize].p()
+    }
+
+    /// Total buffer memory divided by the vertex count (the paper's "bytes per vertex").
+    pub fn bytes_per_vertex(&self) -> f64 {
+        let total = self.vertices.len() * VERTEX_BYTES + self.edges.len() * EDGE_BYTES + self.faces.len() * FACE_BYTES;
+        total as f64 / self.vertices.len().max(1) as f64
+    }
+
+    /// Builds a mesh from corner triangles (CCW from outside, `v[0]` newest), creating the edges.
+    /// Used for the octahedron; every edge must be shared by exactly two faces.
+    pub fn from_triangles(radius: f64, vertices: Vec<Vertex>, tris: &[[u32; 3]]) -> Mesh {
+        use std::collections::HashMap;
+        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new() };
+        let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
+        for (fi, t) in tris.iter().enumerate() {
+            let mut face = Face { v: *t, e: [NONE; 3], kind: FaceKind::Sea, _pad: [0; 3] };
+            for i in 0..3 {
+                // Edge opposite corner i runs from corner i+1 to corner i+2.
+                let (a, b) = (t[(i + 1) % 3], t[(i + 2) % 3]);
+                let id = if let Some(&id) = by_pair.get(&(b, a)) {
+                    mesh.edges[id as usize].f[1] = fi as u32;
+                    id
+                } else {
+                    let id = mesh.edges.len() as u32;
+                    mesh.edges.push(Edge {
+                        v: [a, b],
+                        f: [fi as u32, NONE],
+                        length: 0.0,
+                        level: 0,
+                        kind: EdgeKind::Sea,
+                        _pad: 0,
+                    });
+                    by_pair.insert((a, b), id);
+                    id
+                };
+                face.e[i] = id;
+                mesh.vertices[a as usize].edge = id;
+            }
+            mesh.faces.push(face);
+        }
+        mesh.update_lengths();
+        mesh
+    }
+
+    /// Recomputes every edge length and every vertex's longest incident edge.
+    pub fn update_lengths(&mut self) {
+        let verts = &self.vertices;
+        for e in self.edges.iter_mut() {
+            e.length = verts[e.v[0] as usize].p().distance(verts[e.v[1] as usize].p()) as f32;
+        }
+        for v in self.vertices.iter_mut() {
+            v.max_len = 0.0;
+        }
+        for e in &self.edges {
+            for &v in &e.v {
+                let m = &mut self.vertices[v as usize].max_len;
+                *m = m.max(e.length);
+            }
+        }
+    }
+
+    /// Vertex-to-vertex adjacency in compressed rows: `(offsets, neighbours, edges)`; the
+    /// neighbours of `v` are `neighbours[offsets[v]..offsets[v+1]]`, joined by the matching edges.
+    pub fn adjacency(&self) -> Adjacency {
+        let n = self.vertices.len();
+        let mut offsets = vec![0u32; n + 1];
+        for e in &self.edges {
+            offsets[e.v[0] as usize + 1] += 1;
+            offsets[e.v[1] as usize + 1] += 1;
+        }
+        for i in 0..n {
+            offsets[i + 1] += offsets[i];
+        }
+        let mut fill = offsets.clone();
+        let mut neighbours = vec![0u32; offsets[n] as usize];
+        let mut edges = vec![0u32; offsets[n] as usize];
+        for (ei, e) in self.edges.iter().enumerate() {
+            for k in 0..2 {
+                let a = e.v[k] as usize;
+                let slot = fill[a] as usize;
+                neighbours[slot] = e.v[1 - k];
+                edges[slot] = ei as u32;
+                fill[a] += 1;
+            }
+        }
+        Adjacency { offsets, neighbours, edges }
+    }
+
+    /// Unit normal of face `f` (counter-clockwise winding), unnormalised area vector halved.
+    pub fn face_area_vector(&self, f: u32) -> DVec3 {
+        let face = &self.faces[f as usize];
+        let [a, b, c] = face.v.map(|v| self.pos(v));
+        (b - a).cross(c - a) * 0.5
+    }
+
+    /// Recomputes vertex normals from the surrounding faces (area weighted); river vertices keep
+    /// their stored tangent.
+    pub fn update_normals(&mut self) {
+        let mut acc = vec![DVec3::ZERO; self.vertices.len()];
+        for f in 0..self.faces.len() as u32 {
+            let n = self.face_area_vector(f);
+            for &v in &self.faces[f as usize].v {
+                acc[v as usize] += n;
+            }
+        }
+        for (v, n) in self.vertices.iter_mut().zip(acc) {
+            if !v.flags.contains(VertexFlags::RIVER) {
+                v.normal = n.normalize_or_zero().as_vec3().to_array();
+            }
+        }
+    }
+}
+
+/// Vertex adjacency in compressed rows (see [`Mesh::adjacency`]).
+#[derive(Clone, Debug)]
+pub struct Adjacency {
+    pub offsets: Vec<u32>,
+    pub neighbours: Vec<u32>,
+    pub edges: Vec<u32>,
+}
+
+impl Adjacency {
+    /// `(neighbour, edge)` pairs around `v`.
+    pub fn around(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + '_ {
+        let r = self.offsets[v as usize] as usize..self.offsets[v as usize + 1] as usize;
+        self.neighbours[r.clone()].iter().copied().zip(self.edges[r].iter().copied())
+    }
+    pub fn degree(&self, v: u32) -> usize {
+        (self.offsets[v as usize + 1] - self.offsets[v as usize]) as usize
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,105 @@
+//! Where a split puts its new vertex (paper §4.1 eq. 1–2, §5.3 step 5, eq. 7–9).
+//!
+//! All random numbers come from the new vertex's seed `s_nv = s_ev1 + s_ev2`, so the same edge
+//! always yields the same vertex.
+
+use super::{EdgeKind, Mesh, SplitSite};
+use crate::rng::{salt, uniform, unit};
+use glam::DVec3;
+
+/// Seed of the vertex a split of `site` creates (§3.1: the sum of the end points' seeds).
+pub fn split_seed(mesh: &Mesh, site: &SplitSite) -> u32 {
+    let v = &mesh.vertices;
+    v[site.a as usize].seed.wrapping_add(v[site.b as usize].seed)
+}
+
+/// Eq. 2: a randomised weighted sum of the four vertices around the edge, with
+/// `xi, eta` uniform in `[0.25, 0.75)`. Returns an unprojected point.
+pub fn weighted_position(mesh: &Mesh, site: &SplitSite, seed: u32) -> DVec3 {
+    let xi = uniform(seed, salt::XI, 0.25, 0.75);
+    let eta = uniform(seed, salt::ETA, 0.25, 0.75);
+    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v));
+    (1.0 - eta) * (xi * a + (1.0 - xi) * t) + eta * (xi * d + (1.0 - xi) * b)
+}
+
+/// Sea vertices sit at the centre of the split edge (§5.3 step 5).
+pub fn edge_centre(mesh: &Mesh, site: &SplitSite) -> DVec3 {
+    (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5
+}
+
+/// Eq. 7–9: a river vertex between `v_t` and `v_d`. For edges shorter than the minimum river
+/// length the random `xi` is pulled towards the point `v_s` of the curve that the end points'
+/// downstream tangents describe (eq. 9), which rounds rivers as they are refined.
+///
+/// Eq. 8 is printed garbled in the paper; we read it as: `v_s`'s projection onto `v_t -> v_d`
+/// gives the curve's parameter `xi_s`, and the new `xi` is `xi_s` plus a quarter of the random
+/// offset `xi - 1/2`, clamped to `[0.25, 0.75]` so the vertex stays inside the edge's diamond.
+pub fn river_position(mesh: &Mesh, site: &SplitSite, seed: u32, min_river_length: f64) -> DVec3 {
+    let xi = uniform(seed, salt::XI, 0.25, 0.75);
+    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v));
+    let length = a.distance(b);
+    let xi = if length < min_river_length {
+        // Eq. 9 assumes the river flows from ev1 to ev2; orient by water altitude.
+        let (wa, wb) = (mesh.vertices[site.a as usize].water, mesh.vertices[site.b as usize].water);
+        let (up, down) = if wa >= wb { (site.a, site.b) } else { (site.b, site.a) };
+        let tu = DVec3::from_array(mesh.vertices[up as usize].normal.map(f64::from));
+        let td = DVec3::from_array(mesh.vertices[down as usize].normal.map(f64::from));
+        let vs = (a + b) * 0.5 + length * (tu - td) * 0.25;
+        let td_line = t - d;
+        let denom = td_line.length_squared();
+        // Parameter measured from v_t, as eq. 7 weights v_d by xi.
+        let s = if denom > 0.0 { 1.0 - (vs - d).dot(td_line) / denom } else { 0.5 };
+        (s + 0.25 * (xi - 0.5)).clamp(0.25, 0.75)
+    } else {
+        xi
+    };
+    (1.0 - xi) * t + xi * d
+}
+
+/// Position of a new vertex on an edge of `kind` (before lifting to its altitude).
+pub fn split_position(mesh: &Mesh, site: &SplitSite, seed: u32, kind: EdgeKind, min_river_length: f64) -> DVec3 {
+    let p = match kind {
+        EdgeKind::Sea => return edge_centre(mesh, site),
+        EdgeKind::River => river_position(mesh, site, seed, min_river_length),
+        EdgeKind::Coast | EdgeKind::Continent => weighted_position(mesh, site, seed),
+    };
+    valid_or_centre(mesh, site, p)
+}
+
+/// Keeps `p` if the four faces the split makes stay counter-clockwise on the sphere, else the
+/// edge centre, which always does. Eq. 2 and eq. 7 place the vertex inside the diamond
+/// `a, t, b, d`; where that diamond is not convex (large or skewed faces) the point could fold
+/// a face over, and this guard — a function of the same four vertices, so still reproducible —
+/// prevents it.
+pub fn valid_or_centre(mesh: &Mesh, site: &SplitSite, p: DVec3) -> DVec3 {
+    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v).normalize());
+    let m = p.normalize();
+    let ccw = |x: DVec3, y: DVec3, z: DVec3| {
+        let det = x.cross(y).dot(z);
+        det > 1e-4 * (x - y).length() * (y - z).length() * (z - x).length()
+    };
+    if ccw(m, t, a) && ccw(m, b, t) && ccw(m, a, d) && ccw(m, d, b) {
+        p
+    } else {
+        edge_centre(mesh, site)
+    }
+}
+
+/// Eq. 1: lifts a point onto the sphere of radius `radius + altitude` (centre at the origin).
+#[inline]
+pub fn lift(p: DVec3, radius: f64, altitude: f64) -> DVec3 {
+    p.normalize() * (radius + altitude)
+}
+
+/// A uniform number in `[0, 1)` for altitude choices at a vertex.
+#[inline]
+pub fn altitude_random(seed: u32) -> f64 {
+    unit(seed, salt::ALTITUDE)
+}
+
+/// Unit vector from `from` towards `to`, projected onto the tangent plane at `from`.
+pub fn tangent_towards(from: DVec3, to: DVec3) -> DVec3 {
+    let up = from.normalize();
+    let d = to - from;
+    (d - up * d.dot(up)).normalize_or_zero()
+}

@@ -1,0 +1,125 @@
+use super::*;
+use crate::build::shape::{octahedron, refine_to};
+use glam::DVec3;
+
+fn sphere(faces: usize) -> Mesh {
+    let mut m = octahedron(6_371_000.0, 11);
+    refine_to(&mut m, faces, 11);
+    m
+}
+
+fn midpoint_vertex(m: &Mesh, site: &SplitSite) -> Vertex {
+    let p = (m.pos(site.a) + m.pos(site.b)).normalize() * m.radius;
+    Vertex { level: 1, ..Vertex::new(p, 7) }
+}
+
+#[test]
+fn split_then_collapse_restores_the_mesh() {
+    let base = sphere(500);
+    let mut m = base.clone();
+    let e = (0..m.edges.len() as u32).find(|&e| m.split_site(e).is_some()).unwrap();
+    let site = m.split_site(e).unwrap();
+    let v = midpoint_vertex(&m, &site);
+    let s = m.split_edge(&site, v, [EdgeKind::Sea; 4]);
+    m.validate().unwrap();
+    assert_eq!(m.faces.len(), base.faces.len() + 2);
+    assert_eq!(m.edges.len(), base.edges.len() + 3);
+    let c = m.collapse_site(s.v).expect("fresh split vertex collapses");
+    assert_eq!(c.e, s.e);
+    m.collapse_vertex(&c);
+    m.compact();
+    m.validate().unwrap();
+    assert_eq!(m, base);
+}
+
+#[test]
+fn base_vertices_and_refined_neighbourhoods_do_not_collapse() {
+    let mut m = sphere(200);
+    assert!((0..m.vertices.len() as u32).all(|v| m.collapse_site(v).is_none()));
+    let e = (0..m.edges.len() as u32).find(|&e| m.split_site(e).is_some()).unwrap();
+    let site = m.split_site(e).unwrap();
+    let v = midpoint_vertex(&m, &site);
+    let s = m.split_edge(&site, v, [EdgeKind::Sea; 4]);
+    // Splitting a child's refinement edge makes the first vertex uncollapsible until undone.
+    let child_edge = m.faces[s.f[0] as usize].e[0];
+    let mut make = |m: &Mesh, site: &SplitSite| (midpoint_vertex(m, site), [EdgeKind::Sea; 4]);
+    let done = m.refine_edge(child_edge, &mut make);
+    m.validate().unwrap();
+    assert!(m.collapse_site(s.v).is_none());
+    for split in done.iter().rev() {
+        let c = m.collapse_site(split.v).unwrap();
+        m.collapse_vertex(&c);
+    }
+    assert!(m.collapse_site(s.v).is_some());
+}
+
+#[test]
+fn split_types_follow_section_3_2() {
+    assert_eq!(
+        split_kinds(EdgeKind::River, FaceKind::Land, FaceKind::Land),
+        [EdgeKind::River, EdgeKind::Continent, EdgeKind::River, EdgeKind::Continent]
+    );
+    assert_eq!(
+        split_kinds(EdgeKind::Coast, FaceKind::Sea, FaceKind::Land),
+        [EdgeKind::Coast, EdgeKind::Sea, EdgeKind::Coast, EdgeKind::Continent]
+    );
+    assert_eq!(split_kinds(EdgeKind::Sea, FaceKind::Sea, FaceKind::Sea), [EdgeKind::Sea; 4]);
+    assert_eq!(split_kinds(EdgeKind::Continent, FaceKind::Land, FaceKind::Land), [EdgeKind::Continent; 4]);
+}
+
+#[test]
+fn random_refinement_and_coarsening_round_trips() {
+    // Refine at random places, then collapse everything collapsible until nothing is: the base
+    // mesh comes back exactly.
+    let base = sphere(300);
+    let mut m = base.clone();
+    let mut rng = crate::rng::Sequence::new(3, 3);
+    let mut make = |m: &Mesh, site: &SplitSite| (midpoint_vertex(m, site), [EdgeKind::Sea; 4]);
+    for _ in 0..200 {
+        let e = rng.below(m.edges.len()) as u32;
+        m.refine_edge(e, &mut make);
+    }
+    m.validate().unwrap();
+    assert!(m.vertices.len() > base.vertices.len() + 200);
+    loop {
+        let ready: Vec<u32> = (0..m.vertices.len() as u32).filter(|&v| m.collapse_site(v).is_some()).collect();
+        if ready.is_empty() {
+            break;
+        }
+        for v in ready {
+            if let Some(c) = m.collapse_site(v) {
+                m.collapse_vertex(&c);
+            }
+        }
+    }
+    m.compact();
+    m.validate().unwrap();
+    assert_eq!(m.faces.len(), base.faces.len());
+    let mut a: Vec<[u64; 3]> = m.vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
+    let mut b: Vec<[u64; 3]> = base.vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
+    a.sort_unstable();
+    b.sort_unstable();
+    assert_eq!(a, b);
+}
+
+#[test]
+fn memory_per_vertex_is_reported() {
+    let m = sphere(1000);
+    let bpv = m.bytes_per_vertex();
+    // V - E + F = 2 with E = 3V - 6, F = 2V - 4.
+    let expected = (VERTEX_BYTES + 3 * EDGE_BYTES + 2 * FACE_BYTES) as f64;
+    assert!((bpv - expected).abs() < 2.0, "{bpv} vs {expected}");
+}
+
+#[test]
+fn adjacency_lists_every_edge_twice() {
+    let m = sphere(400);
+    let adj = m.adjacency();
+    let total: usize = (0..m.vertices.len() as u32).map(|v| adj.degree(v)).sum();
+    assert_eq!(total, 2 * m.edges.len());
+    let v = 0u32;
+    for (w, e) in adj.around(v) {
+        assert_eq!(m.edges[e as usize].other(v), w);
+    }
+    assert!(DVec3::from_array(m.vertices[0].pos).length() > 0.0);
+}

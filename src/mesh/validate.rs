@@ -1,0 +1,64 @@
+//! Structural checks of the mesh: a closed, consistently wound 2-manifold of genus 0 whose
+//! buffers reference each other correctly. Used by tests and by `--check` style diagnostics.
+
+use super::{Mesh, NONE};
+
+impl Mesh {
+    /// Checks connectivity and winding; returns the first problem found.
+    pub fn validate(&self) -> Result<(), String> {
+        let nv = self.vertices.len() as u32;
+        let ne = self.edges.len() as u32;
+        let nf = self.faces.len() as u32;
+        let mut uses = vec![0u8; ne as usize];
+        for (fi, f) in self.faces.iter().enumerate() {
+            let fi = fi as u32;
+            if f.v.iter().any(|&v| v >= nv) || f.e.iter().any(|&e| e >= ne) {
+                return Err(format!("face {fi} references a missing vertex or edge"));
+            }
+            if f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2] {
+                return Err(format!("face {fi} repeats a vertex"));
+            }
+            for i in 0..3 {
+                let (a, b) = (f.v[(i + 1) % 3], f.v[(i + 2) % 3]);
+                let edge = &self.edges[f.e[i] as usize];
+                let side = if edge.v == [a, b] {
+                    0
+                } else if edge.v == [b, a] {
+                    1
+                } else {
+                    return Err(format!("face {fi} slot {i}: edge {} does not join {a},{b}", f.e[i]));
+                };
+                if edge.f[side] != fi {
+                    return Err(format!("edge {} does not point back to face {fi}", f.e[i]));
+                }
+                uses[f.e[i] as usize] += 1;
+            }
+            let n = self.face_area_vector(fi);
+            let centre = (self.pos(f.v[0]) + self.pos(f.v[1]) + self.pos(f.v[2])) / 3.0;
+            if n.length() <= 0.0 || !n.is_finite() {
+                return Err(format!("face {fi} is degenerate"));
+            }
+            if n.dot(centre) <= 0.0 {
+                return Err(format!("face {fi} faces inwards"));
+            }
+        }
+        for (ei, e) in self.edges.iter().enumerate() {
+            if uses[ei] != 2 || e.f.contains(&NONE) {
+                return Err(format!("edge {ei} is used by {} faces, not 2", uses[ei]));
+            }
+        }
+        for (vi, v) in self.vertices.iter().enumerate() {
+            if v.edge >= ne || !self.edges[v.edge as usize].v.contains(&(vi as u32)) {
+                return Err(format!("vertex {vi} points at edge {} that does not touch it", v.edge));
+            }
+            if !v.p().is_finite() || !v.ground.is_finite() || !v.water.is_finite() {
+                return Err(format!("vertex {vi} has a non-finite position or altitude"));
+            }
+        }
+        let euler = nv as i64 - ne as i64 + nf as i64;
+        if euler != 2 {
+            return Err(format!("Euler characteristic is {euler}, not 2 (V={nv}, E={ne}, F={nf})"));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,189 @@
+//! `riverworld generate` end to end: real maps, determinism, and bad input (exit code 2).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_riverworld"))
+}
+
+fn maps(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("maps").join(name)
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("riverworld-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("binary runs")
+}
+
+fn stats(dir: &Path) -> serde_json::Value {
+    serde_json::from_slice(&std::fs::read(dir.join("stats.json")).unwrap()).unwrap()
+}
+
+#[test]
+fn continent_bitmap_gives_a_planet_shaped_like_the_map() {
+    let out = scratch("bitmap");
+    let map = maps("earth_landmask_ne10m_1024x512.png");
+    let o = run(&["generate", "--map", map.to_str().unwrap(), "--out", out.to_str().unwrap(), "--raster-width", "512"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = stats(&out);
+    let land = s["land_fraction"].as_f64().unwrap();
+    assert!((land - 0.288).abs() < 0.02, "land fraction {land}");
+    assert_eq!(s["monotone_violations"], 0);
+    assert!(s["drained_fraction"].as_f64().unwrap() > 0.999);
+    assert!(s["faces"].as_u64().unwrap() > 50_000);
+    // The exported land mask agrees with the input map on most pixels.
+    let ours = image::load_from_memory(&std::fs::read(out.join("landmask.png")).unwrap()).unwrap().to_luma8();
+    let theirs = image::open(&map).unwrap().resize_exact(512, 256, image::imageops::FilterType::Triangle).to_luma8();
+    let agree = ours.pixels().zip(theirs.pixels()).filter(|(a, b)| (a.0[0] >= 128) == (b.0[0] >= 128)).count();
+    let share = agree as f64 / (512.0 * 256.0);
+    assert!(share > 0.97, "landmask agrees on {share:.3} of pixels");
+    for f in ["planet.glb", "rivers.geojson", "landmask.png", "elevation.tif", "preview.png", "stats.json"] {
+        assert!(std::fs::metadata(out.join(f)).unwrap().len() > 0, "{f}");
+    }
+}
+
+#[test]
+fn same_inputs_give_identical_files() {
+    let (a, b) = (scratch("det-a"), scratch("det-b"));
+    for dir in [&a, &b] {
+        let o = run(&[
+            "generate",
+            "--seed",
+            "7",
+            "--faces",
+            "3000",
+            "--out",
+            dir.to_str().unwrap(),
+            "--raster-width",
+            "256",
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    for f in ["planet.glb", "rivers.geojson", "landmask.png", "elevation.tif", "preview.png"] {
+        assert!(std::fs::read(a.join(f)).unwrap() == std::fs::read(b.join(f)).unwrap(), "{f} differs");
+    }
+    let (mut sa, mut sb) = (stats(&a), stats(&b));
+    sa["build_ms"] = 0.into();
+    sb["build_ms"] = 0.into();
+    assert_eq!(sa, sb);
+    let c = scratch("det-c");
+    assert!(run(&[
+        "generate",
+        "--seed",
+        "8",
+        "--faces",
+        "3000",
+        "--out",
+        c.to_str().unwrap(),
+        "--raster-width",
+        "256"
+    ])
+    .status
+    .success());
+    assert!(std::fs::read(a.join("planet.glb")).unwrap() != std::fs::read(c.join("planet.glb")).unwrap());
+}
+
+#[test]
+fn elevation_maps_shape_the_relief() {
+    // ETOPO5 as GeoTIFF (real metres): sea where the map is below sea level, high land where it is high.
+    let out = scratch("etopo");
+    let map = maps("earth_etopo5_1024x512.tif");
+    let o = run(&["generate", "--map", map.to_str().unwrap(), "--faces", "20000", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = stats(&out);
+    assert!((s["land_fraction"].as_f64().unwrap() - 0.29).abs() < 0.03, "{s}");
+    assert_eq!(s["monotone_violations"], 0);
+    let tif = std::fs::read(out.join("elevation.tif")).unwrap();
+    let mut dec = tiff::decoder::Decoder::new(std::io::Cursor::new(tif)).unwrap();
+    let (w, h) = dec.dimensions().unwrap();
+    let tiff::decoder::DecodingResult::F32(px) = dec.read_image().unwrap() else { panic!("float32 expected") };
+    let at = |lat: f64, lon: f64| {
+        let col = (((lon + 180.0) / 360.0) * w as f64) as usize;
+        let row = (((90.0 - lat) / 180.0) * h as f64) as usize;
+        px[row * w as usize + col]
+    };
+    assert!(at(32.0, 85.0) > 2000.0, "Tibet at {}", at(32.0, 85.0));
+    assert!(at(-15.0, -140.0) < -2000.0, "Pacific at {}", at(-15.0, -140.0));
+    assert!(at(-80.0, 60.0) > 1000.0, "Antarctica at {}", at(-80.0, 60.0));
+    // The same map as a 16-bit PNG with its metre range.
+    let png = scratch("etopo-png");
+    let o = run(&[
+        "generate",
+        "--map",
+        maps("earth_etopo5_1024x512.png").to_str().unwrap(),
+        "--map-range",
+        "-9010,6125",
+        "--faces",
+        "20000",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let land_png = stats(&png)["land_fraction"].as_f64().unwrap();
+    assert!((land_png - s["land_fraction"].as_f64().unwrap()).abs() < 0.01);
+}
+
+#[test]
+fn a_regional_map_becomes_a_refined_island() {
+    let out = scratch("region");
+    let map = maps("region_jacksboro_tn_403x344.tif");
+    let o = run(&["generate", "--map", map.to_str().unwrap(), "--out", out.to_str().unwrap(), "--raster-width", "256"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = stats(&out);
+    // The region (~36 x 32 km) is land, the rest of the planet sea.
+    let land = s["land_fraction"].as_f64().unwrap();
+    assert!(land > 0.0 && land < 1e-4, "land fraction {land}");
+    assert!(s["faces"].as_u64().unwrap() > 20_000, "region not refined: {s}");
+    assert!(s["river_edges"].as_u64().unwrap() > 100, "{s}");
+    assert_eq!(s["monotone_violations"], 0);
+}
+
+#[test]
+fn bad_input_is_refused_with_exit_code_2() {
+    let dir = scratch("bad");
+    let html = dir.join("page.png");
+    std::fs::write(&html, b"<html><body>not a map</body></html>").unwrap();
+    let full = std::fs::read(maps("earth_landmask_ne10m_1024x512.png")).unwrap();
+    let truncated = dir.join("truncated.png");
+    std::fs::write(&truncated, &full[..full.len() / 2]).unwrap();
+    let all_land = dir.join("all_land.png");
+    image::GrayImage::from_pixel(64, 32, image::Luma([255])).save(&all_land).unwrap();
+    let all_sea = dir.join("all_sea.png");
+    image::GrayImage::from_pixel(64, 32, image::Luma([0])).save(&all_sea).unwrap();
+    let params = dir.join("params.json");
+    std::fs::write(&params, r#"{"seed": 1, "params": {"land_percent": 150}}"#).unwrap();
+    let unknown = dir.join("unknown.json");
+    std::fs::write(&unknown, r#"{"params": {"radius": 1}}"#).unwrap();
+    let s = |p: &Path| p.to_str().unwrap().to_string();
+    let etopo16 = maps("earth_etopo5_1024x512.png");
+    let cases: Vec<(Vec<String>, &str)> = vec![
+        (vec!["--map".into(), s(&dir.join("missing.png"))], "cannot read"),
+        (vec!["--map".into(), s(&html)], "not a PNG or TIFF"),
+        (vec!["--map".into(), s(&truncated)], "corrupt"),
+        (vec!["--map".into(), s(&all_land)], "no sea"),
+        (vec!["--map".into(), s(&all_sea)], "no land"),
+        (vec!["--map".into(), s(&etopo16), "--map-kind".into(), "continents".into()], "16-bit"),
+        (vec!["--map".into(), s(&etopo16), "--map-kind".into(), "elevation".into()], "map_range"),
+        (vec!["--params".into(), s(&params)], "land_percent"),
+        (vec!["--params".into(), s(&unknown)], "radius"),
+        (vec!["--faces".into(), "2".into()], "base_faces"),
+    ];
+    let out = dir.join("out");
+    for (args, needle) in cases {
+        let mut all = vec!["generate".to_string(), "--out".into(), s(&out)];
+        all.extend(args.iter().cloned());
+        let o = bin().args(&all).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err:?} lacks {needle:?}");
+    }
+    // Nothing was written for refused inputs.
+    assert!(!out.join("planet.glb").exists());
+}
