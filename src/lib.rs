@@ -2,6 +2,7 @@
 //! Instant Procedural Planets* (2011). Data flows one way:
 //! `maps -> build -> mesh -> adapt -> export / render -> server`.
 
+pub mod adapt;
 pub mod bench;
 pub mod build;
 pub mod export;

@@ -78,8 +78,11 @@ impl Mesh {
         let k3 = self.edges[e3 as usize].kind;
         let kind = if k1 == k3 || k3 == EdgeKind::River { k1 } else { k3 };
         let length = self.pos(a).distance(self.pos(b)) as f32;
+        let [lod_len, lod_radius] = self.vertices[m as usize].parent_lod;
         let edge = &mut self.edges[e1 as usize];
         edge.v = [a, b];
+        edge.lod_len = lod_len;
+        edge.lod_radius = lod_radius;
         edge.level -= 1;
         edge.kind = kind;
         edge.length = length;

@@ -11,6 +11,7 @@
 //! Earth radius an `f64` resolves ~1 nm, so the paper's 1 cm minimum edge length is far above the
 //! rounding error.
 
+pub mod altitude;
 mod collapse;
 mod kinds;
 mod split;
@@ -41,8 +42,9 @@ pub struct Vertex {
     /// An incident edge. For a vertex made by a split this is the half `e1` of the split edge,
     /// which tells a collapse which two edges to merge.
     pub edge: u32,
-    /// Longest incident edge, metres (used by the refinement criterion `l/d > c`).
-    pub max_len: f32,
+    /// Level-of-detail bounds `[length, radius]` of the edge whose split made this vertex,
+    /// restored to that edge when the vertex collapses (see [`Edge::lod_len`]).
+    pub parent_lod: [f32; 2],
     /// Per-vertex random seed; a split vertex gets `s_ev1 + s_ev2` (§3.1).
     pub seed: u32,
     /// Types of the incident edges when the vertex was made (§3.2).
@@ -62,6 +64,15 @@ pub struct Edge {
     pub f: [u32; 2],
     /// Length, metres.
     pub length: f32,
+    /// Length used by the refinement criterion `l/d > c`: the edge's length, but never more
+    /// than that of the edge whose split made it, so the criterion can only weaken from
+    /// parent to child.
+    pub lod_len: f32,
+    /// Radius of a ball around the edge's midpoint that lies inside the parent edge's ball
+    /// (it may be negative). Distances are measured to this ball, so a child is never nearer
+    /// than its parent; with `lod_len` this makes "wants to split" hereditary, and the adapted
+    /// mesh for a camera the same whatever was adapted before.
+    pub lod_radius: f32,
     /// Split level: incremented by each split, decremented by each collapse.
     pub level: u16,
     pub kind: EdgeKind,
@@ -97,7 +108,7 @@ impl Vertex {
             ground: 0.0,
             water: 0.0,
             edge: NONE,
-            max_len: 0.0,
+            parent_lod: [0.0; 2],
             seed,
             flags: VertexFlags::empty(),
             level: 0,
@@ -133,6 +144,10 @@ impl Face {
         self.v.iter().position(|&x| x == v)
     }
 }
+
+/// Ball radius of a root edge, in edge lengths: large enough that the balls of the edges its
+/// splits make usually fit inside without shrinking.
+pub const LOD_RADIUS: f32 = 1.0;
 
 /// Bytes one vertex, one edge and one face take in the buffers.
 pub const VERTEX_BYTES: usize = std::mem::size_of::<Vertex>();
@@ -170,6 +185,8 @@ impl Mesh {
                         v: [a, b],
                         f: [fi as u32, NONE],
                         length: 0.0,
+                        lod_len: 0.0,
+                        lod_radius: 0.0,
                         level: 0,
                         kind: EdgeKind::Sea,
                         _pad: 0,
@@ -186,21 +203,21 @@ impl Mesh {
         mesh
     }
 
-    /// Recomputes every edge length and every vertex's longest incident edge.
+    /// Recomputes every edge length and makes every edge a root of the level-of-detail
+    /// hierarchy (`lod_len` = length, `lod_radius` = [`LOD_RADIUS`] x length).
     pub fn update_lengths(&mut self) {
         let verts = &self.vertices;
         for e in self.edges.iter_mut() {
             e.length = verts[e.v[0] as usize].p().distance(verts[e.v[1] as usize].p()) as f32;
+            e.lod_len = e.length;
+            e.lod_radius = LOD_RADIUS * e.length;
         }
-        for v in self.vertices.iter_mut() {
-            v.max_len = 0.0;
-        }
-        for e in &self.edges {
-            for &v in &e.v {
-                let m = &mut self.vertices[v as usize].max_len;
-                *m = m.max(e.length);
-            }
-        }
+    }
+
+    /// Midpoint of edge `e`.
+    pub fn midpoint(&self, e: u32) -> DVec3 {
+        let edge = &self.edges[e as usize];
+        (self.pos(edge.v[0]) + self.pos(edge.v[1])) * 0.5
     }
 
     /// Vertex-to-vertex adjacency in compressed rows: `(offsets, neighbours, edges)`; the

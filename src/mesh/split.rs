@@ -6,7 +6,7 @@
 //! `e3 = (m, b)`, `e2 = (m, t)` and `e4 = (m, d)`; `f1` and `f2` keep the halves at `a`, the new
 //! faces `f3` and `f4` take the halves at `b`.
 
-use super::{Edge, EdgeKind, Face, FaceKind, Mesh, Vertex, VertexFlags, NONE};
+use super::{Edge, EdgeKind, Face, FaceKind, Mesh, Vertex, VertexFlags, LOD_RADIUS, NONE};
 
 /// Where a split happens: the edge, its end points and the corners opposite it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,7 +64,8 @@ impl Mesh {
     }
 
     /// Splits the edge at `site`, inserting `vertex` with inner edge kinds `kinds` (`[e1..e4]`).
-    /// Lengths of the four edges are set; `max_len` of vertices is left to the caller.
+    /// Lengths and level-of-detail bounds of the four edges are set; the new vertex keeps the
+    /// split edge's bounds for its collapse.
     pub fn split_edge(&mut self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4]) -> Split {
         let SplitSite { edge: e1, a, b, t, d, f1, f2 } = *site;
         let m = self.vertices.len() as u32;
@@ -78,7 +79,9 @@ impl Mesh {
         };
         let old1 = self.faces[f1 as usize];
         let old2 = self.faces[f2 as usize];
-        let level = self.edges[e1 as usize].level + 1;
+        let parent = self.edges[e1 as usize];
+        let level = parent.level + 1;
+        let parent_mid = (self.pos(a) + self.pos(b)) * 0.5;
 
         // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
         let face = |v: [u32; 3], e: [u32; 3], kind| Face { v, e, kind, _pad: [0; 3] };
@@ -92,7 +95,16 @@ impl Mesh {
         self.replace_face(old2.e[2], f2, f4);
 
         // Edges.
-        let mk = |v: [u32; 2], f: [u32; 2], kind| Edge { v, f, length: 0.0, level, kind, _pad: 0 };
+        let mk = |v: [u32; 2], f: [u32; 2], kind| Edge {
+            v,
+            f,
+            length: 0.0,
+            lod_len: 0.0,
+            lod_radius: 0.0,
+            level,
+            kind,
+            _pad: 0,
+        };
         self.edges[e1 as usize] = mk([a, m], [f1, f2], kinds[0]);
         self.edges.push(mk([m, t], [f1, f3], kinds[1]));
         self.edges.push(mk([m, b], [f3, f4], kinds[2]));
@@ -100,15 +112,20 @@ impl Mesh {
 
         // Vertices.
         vertex.edge = e1;
+        vertex.parent_lod = [parent.lod_len, parent.lod_radius];
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
         self.vertices.push(vertex);
         if self.vertices[b as usize].edge == e1 {
             self.vertices[b as usize].edge = e3;
         }
         for e in [e1, e2, e3, e4] {
-            let edge = &self.edges[e as usize];
-            let len = self.pos(edge.v[0]).distance(self.pos(edge.v[1])) as f32;
-            self.edges[e as usize].length = len;
+            let [p, q] = self.edges[e as usize].v.map(|v| self.pos(v));
+            let len = p.distance(q);
+            let offset = ((p + q) * 0.5).distance(parent_mid);
+            let edge = &mut self.edges[e as usize];
+            edge.length = len as f32;
+            edge.lod_len = edge.length.min(parent.lod_len);
+            edge.lod_radius = (LOD_RADIUS * edge.length).min(round_down(parent.lod_radius as f64 - offset));
         }
         Split { v: m, e: [e1, e2, e3, e4], f: [f1, f2, f3, f4] }
     }
@@ -145,6 +162,16 @@ impl Mesh {
             stack.pop();
         }
         done
+    }
+}
+
+/// `x` as the largest `f32` not above it, so nested balls stay nested after rounding.
+fn round_down(x: f64) -> f32 {
+    let v = x as f32;
+    if v as f64 > x {
+        v.next_down()
+    } else {
+        v
     }
 }
 

@@ -1,0 +1,386 @@
+//! Cameras and the refinement criterion of view-dependent adaption (paper §5.1).
+//!
+//! One syntax for the command line and HTTP, a query string:
+//! `eye=X,Y,Z&target=X,Y,Z&up=X,Y,Z&fov=DEG&width=PX&height=PX&land_px=PX&water_px=PX`, metres in
+//! the planet-centred frame (+Z = north pole, longitude 0 on +X). `fov` is vertical.
+//!
+//! The criterion is the paper's `l / d > c`, with `c` from a target projected edge length in
+//! pixels. To make the adapted mesh independent of the path that led to it, `l` and `d` are taken
+//! from per-edge bounds that only weaken from parent edge to child (see `Edge::lod_len` and
+//! `Edge::lod_radius`): `d` is the distance to a ball that contains every child's ball, eq. 6's
+//! slow-down outside the frustum uses how far that ball lies outside the frustum planes, and
+//! back-face culling drops balls entirely behind the planet's horizon.
+
+use glam::DVec3;
+
+/// Paper's constant for the level-of-detail falloff outside the frustum (eq. 6).
+pub const C_LOD: f64 = 20.0;
+/// Default target projected edge length on land, pixels. The paper used 0.5 px at 1920x1080;
+/// 2 px keeps a full-HD view near a million faces on two CPU cores.
+pub const DEFAULT_LAND_PX: f64 = 2.0;
+/// Default target projected edge length on the sea, pixels (the paper used 5 px with 0.5 on land).
+pub const DEFAULT_WATER_PX: f64 = 10.0;
+/// Largest accepted image side, pixels.
+pub const MAX_SIDE: u32 = 8192;
+
+/// A validated camera.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    pub eye: DVec3,
+    pub target: DVec3,
+    pub up: DVec3,
+    pub fov_deg: f64,
+    pub width: u32,
+    pub height: u32,
+    pub land_px: f64,
+    pub water_px: f64,
+}
+
+/// A camera query that cannot be used, with the parameter at fault.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("camera {field}: {message}")]
+pub struct CameraError {
+    pub field: &'static str,
+    pub message: String,
+}
+
+fn err(field: &'static str, message: impl Into<String>) -> CameraError {
+    CameraError { field, message: message.into() }
+}
+
+fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(err(field, format!("expected X,Y,Z, got {s:?}")));
+    }
+    let mut v = [0.0; 3];
+    for (i, p) in parts.iter().enumerate() {
+        v[i] = p.parse::<f64>().map_err(|_| err(field, format!("{p:?} is not a number")))?;
+        if !v[i].is_finite() {
+            return Err(err(field, format!("{p:?} is not finite")));
+        }
+    }
+    Ok(DVec3::from_array(v))
+}
+
+fn number(field: &'static str, s: &str) -> Result<f64, CameraError> {
+    let v: f64 = s.trim().parse().map_err(|_| err(field, format!("{s:?} is not a number")))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(err(field, format!("{s:?} is not finite")))
+    }
+}
+
+impl Camera {
+    /// Parses a camera query (keys in any order; `&` or `;` separated). Keys that are not
+    /// camera keys are returned for the caller (e.g. `max_faces`), unknown to the camera.
+    pub fn parse_query(query: &str, radius: f64) -> Result<(Camera, Vec<(String, String)>), CameraError> {
+        let (mut eye, mut target, mut up, mut fov, mut width, mut height) = (None, None, None, 60.0, 1920, 1080);
+        let (mut land_px, mut water_px) = (DEFAULT_LAND_PX, DEFAULT_WATER_PX);
+        let mut rest = Vec::new();
+        for pair in query.trim_start_matches('?').split(['&', ';']).filter(|p| !p.is_empty()) {
+            let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+            let v = percent_decode(v);
+            match k {
+                "eye" => eye = Some(vec3("eye", &v)?),
+                "target" => target = Some(vec3("target", &v)?),
+                "up" => up = Some(vec3("up", &v)?),
+                "fov" => fov = number("fov", &v)?,
+                "width" => width = size("width", &v)?,
+                "height" => height = size("height", &v)?,
+                "land_px" => land_px = number("land_px", &v)?,
+                "water_px" => water_px = number("water_px", &v)?,
+                _ => rest.push((k.to_string(), v)),
+            }
+        }
+        let eye = eye.ok_or_else(|| err("eye", "missing (eye=X,Y,Z in metres, planet-centred)"))?;
+        let target = target.ok_or_else(|| err("target", "missing (target=X,Y,Z)"))?;
+        let cam = Camera::new(eye, target, up, fov, width, height, land_px, water_px, radius)?;
+        Ok((cam, rest))
+    }
+
+    /// Builds and validates a camera; `up` defaults to north projected across the view.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        eye: DVec3,
+        target: DVec3,
+        up: Option<DVec3>,
+        fov_deg: f64,
+        width: u32,
+        height: u32,
+        land_px: f64,
+        water_px: f64,
+        radius: f64,
+    ) -> Result<Camera, CameraError> {
+        if eye.length() < radius {
+            return Err(err(
+                "eye",
+                format!("is inside the planet ({:.0} m from the centre, radius {radius:.0} m)", eye.length()),
+            ));
+        }
+        let dir = target - eye;
+        if dir.length() < 1e-6 {
+            return Err(err("target", "equals the eye"));
+        }
+        if !(fov_deg > 0.1 && fov_deg < 179.0) {
+            return Err(err("fov", format!("must be in (0.1, 179) degrees, got {fov_deg}")));
+        }
+        for (name, v) in [("width", width), ("height", height)] {
+            if v == 0 || v > MAX_SIDE {
+                return Err(err(name, format!("must be in 1..={MAX_SIDE}, got {v}")));
+            }
+        }
+        for (name, v) in [("land_px", land_px), ("water_px", water_px)] {
+            if !(0.05..=1000.0).contains(&v) {
+                return Err(err(name, format!("must be in [0.05, 1000] pixels, got {v}")));
+            }
+        }
+        let fwd = dir.normalize();
+        let up = match up {
+            Some(u) => {
+                if u.cross(fwd).length() < 1e-9 * u.length().max(1e-300) || u.length() == 0.0 {
+                    return Err(err("up", "is zero or parallel to the view direction"));
+                }
+                u
+            }
+            None => default_up(eye, fwd),
+        };
+        Ok(Camera { eye, target, up, fov_deg, width, height, land_px, water_px })
+    }
+
+    /// The query string that parses back to this camera.
+    pub fn to_query(&self) -> String {
+        let v = |d: DVec3| format!("{},{},{}", d.x, d.y, d.z);
+        format!(
+            "eye={}&target={}&up={}&fov={}&width={}&height={}&land_px={}&water_px={}",
+            v(self.eye),
+            v(self.target),
+            v(self.up),
+            self.fov_deg,
+            self.width,
+            self.height,
+            self.land_px,
+            self.water_px
+        )
+    }
+
+    /// Orthonormal view basis: forward, right, true up.
+    pub fn basis(&self) -> (DVec3, DVec3, DVec3) {
+        let f = (self.target - self.eye).normalize();
+        let r = f.cross(self.up).normalize();
+        (f, r, r.cross(f))
+    }
+
+    /// Pixels per unit of `l/d` on screen: `(height/2) / tan(fov/2)`.
+    pub fn pixels_per_radian(&self) -> f64 {
+        self.height as f64 * 0.5 / (self.fov_deg.to_radians() * 0.5).tan()
+    }
+}
+
+/// North projected across the view direction; near the poles, the direction away from the
+/// planet centre.
+fn default_up(eye: DVec3, fwd: DVec3) -> DVec3 {
+    for cand in [DVec3::Z, eye.normalize(), DVec3::X] {
+        let u = cand - fwd * cand.dot(fwd);
+        if u.length() > 1e-3 {
+            return u.normalize();
+        }
+    }
+    DVec3::Y
+}
+
+fn size(field: &'static str, s: &str) -> Result<u32, CameraError> {
+    s.trim().parse::<u32>().map_err(|_| err(field, format!("{s:?} is not a whole number of pixels")))
+}
+
+/// Decodes `%XX` escapes and `+` (as space) in a query value.
+fn percent_decode(s: &str) -> String {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'%' if i + 2 < bytes.len() => {
+                match u8::from_str_radix(std::str::from_utf8(&bytes[i + 1..i + 3]).unwrap_or("zz"), 16) {
+                    Ok(b) => {
+                        out.push(b);
+                        i += 3;
+                        continue;
+                    }
+                    Err(_) => out.push(b'%'),
+                }
+            }
+            b'+' => out.push(b' '),
+            b => out.push(b),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// Everything the state update needs from a camera, precomputed once per adaption.
+#[derive(Clone, Debug)]
+pub struct View {
+    pub eye: DVec3,
+    /// Inward normals of the four side planes of the frustum (through the eye).
+    planes: [DVec3; 4],
+    /// Split when `lod_len / distance > c`.
+    pub c_land: f64,
+    pub c_water: f64,
+    /// Scale for the eq. 6 falloff: how far outside the frustum counts as "one frustum width".
+    falloff: f64,
+    /// Horizon plane: a ball whose support along `eye_dir` is below this is behind the horizon.
+    eye_dir: DVec3,
+    horizon: f64,
+    /// Never split edges shorter than twice this.
+    pub min_len: f64,
+}
+
+impl View {
+    /// `radius` is the base sphere; `min_len` the minimum edge length.
+    pub fn new(cam: &Camera, radius: f64, min_len: f64) -> View {
+        let (f, r, u) = cam.basis();
+        let tan_v = (cam.fov_deg.to_radians() * 0.5).tan();
+        let tan_h = tan_v * cam.width as f64 / cam.height as f64;
+        // Side planes through the eye, normals pointing into the frustum.
+        let planes = [
+            (f * tan_h - r).normalize(),
+            (f * tan_h + r).normalize(),
+            (f * tan_v - u).normalize(),
+            (f * tan_v + u).normalize(),
+        ];
+        let ppr = cam.pixels_per_radian();
+        let height = (cam.eye.length() - radius).max(1.0);
+        // The horizon of the base sphere, pushed back by how far beyond it a point as high as
+        // the eye or 20 km could still be seen.
+        let d_eye = cam.eye.length();
+        let horizon_plane = radius * radius / d_eye;
+        let margin = (2.0 * radius * 20_000.0f64.max(height)).sqrt();
+        View {
+            eye: cam.eye,
+            planes,
+            c_land: cam.land_px / ppr,
+            c_water: cam.water_px / ppr,
+            falloff: height.max(1.0) * tan_v,
+            eye_dir: cam.eye / d_eye,
+            horizon: horizon_plane - margin,
+            min_len: min_len.max(0.0),
+        }
+    }
+
+    /// Whether an edge with bounds (`lod_len`, ball `centre`, `radius`) should be split; the
+    /// answer can only turn from yes to no going from a parent edge to its children.
+    #[inline]
+    pub fn wants_split(&self, lod_len: f64, centre: DVec3, radius: f64, sea: bool) -> bool {
+        if lod_len < 2.0 * self.min_len {
+            return false;
+        }
+        // Back-face culling: the whole ball lies behind the horizon plane.
+        if centre.dot(self.eye_dir) + radius < self.horizon {
+            return false;
+        }
+        let rel = centre - self.eye;
+        let d = (rel.length() - radius).max(1e-3);
+        let mut outside: f64 = 0.0;
+        for n in &self.planes {
+            outside = outside.max(-n.dot(rel) - radius);
+        }
+        let q = outside / self.falloff;
+        let d = d * (1.0 + C_LOD * q * q); // eq. 6
+        let c = if sea { self.c_water } else { self.c_land };
+        lod_len > c * d
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    const R: f64 = 6_371_000.0;
+
+    #[test]
+    fn parses_a_query_with_defaults() {
+        let (c, rest) = Camera::parse_query("eye=0,0,2e7&target=0,0,0&max_faces=10", R).unwrap();
+        assert_eq!((c.width, c.height, c.fov_deg), (1920, 1080, 60.0));
+        assert_eq!(rest, vec![("max_faces".to_string(), "10".to_string())]);
+        assert!(c.up.dot(c.target - c.eye).abs() < 1e-6);
+        let back = Camera::parse_query(&c.to_query(), R).unwrap().0;
+        assert_eq!(back, c);
+        let (c, _) = Camera::parse_query("eye=1e7%2C0%2C0&target=0,0,0&fov=30&width=640&height=480", R).unwrap();
+        assert_eq!(c.eye, DVec3::new(1e7, 0.0, 0.0));
+    }
+
+    #[test]
+    fn rejects_bad_cameras_naming_the_field() {
+        let bad = [
+            ("eye=0,0,1e6&target=0,0,0", "eye"),
+            ("eye=NaN,0,2e7&target=0,0,0", "eye"),
+            ("eye=0,0,2e7&target=0,0,2e7", "target"),
+            ("eye=0,0,2e7&target=0,0,0&width=0", "width"),
+            ("eye=0,0,2e7&target=0,0,0&height=9000", "height"),
+            ("eye=0,0,2e7&target=0,0,0&fov=0", "fov"),
+            ("eye=0,0,2e7&target=0,0,0&fov=abc", "fov"),
+            ("eye=0,0,2e7&target=0,0,0&up=0,0,1", "up"),
+            ("eye=0,0,2e7", "target"),
+            ("target=0,0,0", "eye"),
+            ("eye=1,2&target=0,0,0", "eye"),
+            ("eye=0,0,2e7&target=0,0,0&land_px=0", "land_px"),
+        ];
+        for (q, field) in bad {
+            let e = Camera::parse_query(q, R).unwrap_err();
+            assert_eq!(e.field, field, "{q}: {e}");
+        }
+    }
+
+    #[test]
+    fn criterion_is_hereditary_for_nested_balls() {
+        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01);
+        let mut rng = crate::rng::Sequence::new(1, 1);
+        for _ in 0..20_000 {
+            let dir = DVec3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5).normalize();
+            let c = dir * R;
+            let r = rng.unit() * 200_000.0;
+            let len = rng.unit() * 100_000.0;
+            let off = DVec3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5) * r;
+            let rc = r - off.length() - rng.unit() * 1000.0;
+            let lc = len * rng.unit();
+            if view.wants_split(lc, c + off, rc, false) {
+                assert!(view.wants_split(len, c, r, false));
+            }
+        }
+    }
+
+    #[test]
+    fn frustum_planes_point_inwards() {
+        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40&width=800&height=400", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01);
+        let (f, r, u) = cam.basis();
+        for n in &view.planes {
+            assert!(n.dot(f) > 0.0);
+        }
+        // Just inside and just outside each side of the frustum.
+        let tan_v = (20.0f64).to_radians().tan();
+        let tan_h = tan_v * 2.0;
+        for (side, tan) in [(r, tan_h), (-r, tan_h), (u, tan_v), (-u, tan_v)] {
+            let inside = f + side * tan * 0.99;
+            let outside = f + side * tan * 1.01;
+            assert!(view.planes.iter().all(|n| n.dot(inside) > 0.0));
+            assert!(view.planes.iter().any(|n| n.dot(outside) < 0.0));
+        }
+    }
+
+    #[test]
+    fn nearer_and_longer_edges_split_first() {
+        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01);
+        let near = DVec3::new(R, 0.0, 0.0);
+        assert!(view.wants_split(100_000.0, near, 0.0, false));
+        assert!(!view.wants_split(100.0, near, 0.0, false));
+        // Behind the planet: never.
+        assert!(!view.wants_split(1.0e6, -near, 0.0, false));
+        // Sea needs longer edges than land.
+        let l = 3000.0;
+        assert!(view.wants_split(l, near, 0.0, false) && !view.wants_split(l, near, 0.0, true));
+    }
+}

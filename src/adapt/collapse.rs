@@ -1,0 +1,12 @@
+//! Parallel vertex collapses (paper §5.4, Algorithm 3). Candidates come from the state update;
+//! their four faces are disjoint, so the collapses do not interfere.
+
+use crate::mesh::{CollapseSite, Mesh};
+
+/// Collapses every site; the removed entities stay marked dead until compaction.
+pub fn apply_collapses(mesh: &mut Mesh, sites: &[CollapseSite]) -> usize {
+    for site in sites {
+        mesh.collapse_vertex(site);
+    }
+    sites.len()
+}

@@ -1,0 +1,70 @@
+//! Vertex and edge state update (paper §5.1, Algorithm 1), data-parallel over the buffers.
+//!
+//! An edge wants a split when the criterion of [`View::wants_split`] holds for its bounds. The
+//! paper's conflict rules follow from newest-vertex bisection: only a face's refinement edge —
+//! its lowest split level — is split (other wanted edges wait for it, see `split.rs`), and a
+//! vertex collapses only when its four faces are still those of its own split, i.e. all of
+//! `e1..e4` share one split level, and when no edge of those faces wants a split.
+
+use super::camera::View;
+use crate::mesh::{CollapseSite, EdgeKind, Mesh};
+use rayon::prelude::*;
+
+/// Whether each edge wants to be split for `view`.
+pub fn edge_wants(mesh: &Mesh, view: &View) -> Vec<bool> {
+    mesh.edges
+        .par_iter()
+        .enumerate()
+        .map(|(e, edge)| {
+            view.wants_split(
+                edge.lod_len as f64,
+                mesh.midpoint(e as u32),
+                edge.lod_radius as f64,
+                edge.kind == EdgeKind::Sea,
+            )
+        })
+        .collect()
+}
+
+/// Edges that must be split for the wanted ones to be: the wanted edges and every refinement
+/// edge on their blocking chains. A vertex whose faces hold such an edge must not collapse, or a
+/// forced split would be undone as soon as it is made.
+pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
+    let chains: Vec<u32> = wants
+        .par_iter()
+        .enumerate()
+        .filter(|(_, &w)| w)
+        .flat_map_iter(|(e, _)| {
+            let mut chain = Vec::new();
+            super::split::blocker_chain(mesh, e as u32, |x| chain.push(x));
+            chain
+        })
+        .collect();
+    let mut out = wants.to_vec();
+    for e in chains {
+        out[e as usize] = true;
+    }
+    out
+}
+
+/// Vertices that may collapse now: made by a split, their four faces untouched since, no edge of
+/// those faces demanded (see [`demanded`]), and the edge they were split from no longer wanting one.
+pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool]) -> Vec<CollapseSite> {
+    (0..mesh.vertices.len() as u32)
+        .into_par_iter()
+        .filter_map(|v| {
+            if mesh.vertices[v as usize].level == 0 {
+                return None;
+            }
+            let site = mesh.collapse_site(v)?;
+            let faces_quiet = site.f.iter().all(|&f| mesh.faces[f as usize].e.iter().all(|&e| !demanded[e as usize]));
+            if !faces_quiet {
+                return None;
+            }
+            let [lod_len, lod_radius] = mesh.vertices[v as usize].parent_lod;
+            let centre = (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5;
+            let sea = mesh.edges[site.e[0] as usize].kind == EdgeKind::Sea;
+            (!view.wants_split(lod_len as f64, centre, lod_radius as f64, sea)).then_some(site)
+        })
+        .collect()
+}

@@ -1,0 +1,176 @@
+//! Altitudes of a vertex made by a split during adaption (paper §5.3 step 6, eq. 10–12): sea
+//! floor, coast, river (interpolated), and continent vertices bounded by the riverbed and slope
+//! rules, or made the spring of a new river arm.
+//!
+//! Everything here is a function of the split site's four vertices and the new vertex's seed,
+//! so the same edge always yields the same vertex.
+
+use super::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
+use super::{split_kinds, EdgeKind, Mesh, SplitSite, Vertex, VertexFlags};
+use crate::params::Params;
+use crate::rng::{salt, unit};
+use glam::DVec3;
+
+/// Relative roughness of the sea floor's midpoint displacement (offset per metre of edge length
+/// at the extremes of the random number).
+const SEA_ROUGHNESS: f64 = 0.02;
+
+/// Full range of the random offset a continent split adds to the mean of its four neighbours:
+/// 15 % of the edge length for short edges, flattening to ~300 m for long ones, so relief grows
+/// with detail but coarse splits cannot pile up kilometres of noise. The paper only asks for "a
+/// random value inside the bounds"; this is our choice, documented.
+pub fn land_roughness(edge_len: f64) -> f64 {
+    0.15 * edge_len / (1.0 + edge_len / 2000.0)
+}
+
+/// Horizontal distance between two planet points (on the base sphere).
+fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
+    p.normalize().distance(q.normalize()) * radius
+}
+
+/// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`.
+pub fn split_vertex(m: &Mesh, site: &SplitSite, p: &Params) -> (Vertex, [EdgeKind; 4]) {
+    let seed = split_seed(m, site);
+    let edge = &m.edges[site.edge as usize];
+    let kinds = split_kinds(edge.kind, m.faces[site.f1 as usize].kind, m.faces[site.f2 as usize].kind);
+    let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+    match edge.kind {
+        EdgeKind::Continent => continent_vertex(m, site, p, seed, pos, kinds),
+        _ => wet_vertex(m, site, p, seed, pos, kinds),
+    }
+}
+
+/// Sea, coast and river splits (§5.3 step 6): the sea floor by midpoint displacement below sea
+/// level, a coast point near sea level, or the river interpolated between its ends.
+pub fn wet_vertex(
+    m: &Mesh,
+    site: &SplitSite,
+    p: &Params,
+    seed: u32,
+    pos: DVec3,
+    kinds: [EdgeKind; 4],
+) -> (Vertex, [EdgeKind; 4]) {
+    let edge = &m.edges[site.edge as usize];
+    let (va, vb) = (&m.vertices[site.a as usize], &m.vertices[site.b as usize]);
+    let xi = altitude_random(seed);
+    let sea = p.sea_level_m;
+    let mid_ground = (va.ground as f64 + vb.ground as f64) * 0.5;
+    let (ground, water, flags) = match edge.kind {
+        EdgeKind::Sea => {
+            let g = (mid_ground + (xi - 0.5) * edge.length as f64 * SEA_ROUGHNESS).min(sea - 1.0);
+            (g, sea, VertexFlags::empty())
+        }
+        EdgeKind::Coast => {
+            // A shore point: within a riverbank's height of sea level.
+            let g = (mid_ground + (xi - 0.5) * p.riverbed_edge_height_m)
+                .clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
+            (g, sea, VertexFlags::empty())
+        }
+        _ => {
+            let w = (va.water as f64 + vb.water as f64) * 0.5;
+            (mid_ground.min(w), w, VertexFlags::RIVER)
+        }
+    };
+    let mut v = Vertex::new(lift(pos, m.radius, ground), seed);
+    v.ground = ground as f32;
+    v.water = water as f32;
+    v.flags = flags;
+    v.level = 1;
+    if edge.kind == EdgeKind::River {
+        let (up, down) = if va.water >= vb.water { (va, vb) } else { (vb, va) };
+        let t = tangent_towards(up.p(), down.p());
+        v.normal = t.as_vec3().to_array();
+    }
+    (v, kinds)
+}
+
+/// A continent split: ground altitude by midpoint displacement kept inside the riverbed bounds
+/// (eq. 11) and the maximum ground slope (eq. 12); or, where the rules allow it, the spring of a
+/// new river arm flowing into a neighbouring river vertex (eq. 10).
+fn continent_vertex(
+    m: &Mesh,
+    site: &SplitSite,
+    p: &Params,
+    seed: u32,
+    pos: DVec3,
+    mut kinds: [EdgeKind; 4],
+) -> (Vertex, [EdgeKind; 4]) {
+    let ends = [site.a, site.t, site.b, site.d]; // the far ends of e1, e2, e3, e4
+    let around = ends.map(|v| &m.vertices[v as usize]);
+    let r = m.radius;
+    let xi = altitude_random(seed);
+    let lens = around.map(|v| horizontal(pos, v.p(), r));
+    let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
+
+    // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
+    // sea level.
+    let mut bank_lo = p.sea_level_m + 1.0;
+    let mut slope_lo = f64::MIN;
+    let mut hi = f64::MAX;
+    for (v, le) in around.iter().zip(lens) {
+        if is_wet(v) {
+            let bank = (v.ground as f64 + le * p.riverbed_slope())
+                .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope());
+            bank_lo = bank_lo.max(bank);
+        } else {
+            slope_lo = slope_lo.max(v.ground as f64 - le * p.ground_slope());
+            hi = hi.min(v.ground as f64 + le * p.ground_slope());
+        }
+    }
+    let edge_len = m.edges[site.edge as usize].length as f64;
+
+    // Eq. 10: a new river arm, when the new edge to a river vertex is long enough and an
+    // altitude exists above that river (by s_r) yet below every dry neighbour's bank.
+    if edge_len >= p.min_river_length_m {
+        let mut cap = f64::MAX;
+        for (v, le) in around.iter().zip(lens) {
+            if !is_wet(v) {
+                cap = cap.min(
+                    v.ground as f64
+                        - (le * p.riverbed_slope()).min(p.riverbed_edge_height_m + le * p.near_river_slope()),
+                );
+            }
+        }
+        let best = (0..4)
+            .filter(|&i| around[i].flags.contains(VertexFlags::RIVER) && lens[i] >= p.min_river_length_m)
+            .map(|i| (i, around[i].water as f64 + lens[i] * p.river_slope()))
+            .filter(|&(_, floor)| floor < cap && floor < p.max_river_altitude_m)
+            .min_by(|x, y| x.1.total_cmp(&y.1).then(x.0.cmp(&y.0)));
+        if let Some((i, floor)) = best {
+            let top = cap.min(p.max_river_altitude_m);
+            let g = floor + (top - floor) * unit(seed, salt::RIVER) * 0.5;
+            kinds[i] = EdgeKind::River;
+            let mut v = Vertex::new(lift(pos, r, g), seed);
+            v.ground = g as f32;
+            v.water = g as f32;
+            v.flags = VertexFlags::RIVER;
+            v.level = 1;
+            v.normal = tangent_towards(v.p(), around[i].p()).as_vec3().to_array();
+            return (v, kinds);
+        }
+    }
+
+    let mean = around.iter().map(|v| v.ground as f64).sum::<f64>() * 0.25;
+    let wanted = mean + (xi - 0.5) * land_roughness(edge_len);
+    let lo = bank_lo.max(slope_lo);
+    let g = if lo <= hi {
+        wanted.clamp(lo, hi.min(p.max_mountain_altitude_m.max(lo)))
+    } else if slope_lo <= hi {
+        // A riverbank (or sea level) asks for more than the slope allows: the slope wins and
+        // the vertex may end up under the river's water (below).
+        hi
+    } else {
+        // The neighbours are steeper than s_g across the diamond: no altitude satisfies eq. 12,
+        // so take the one that exceeds it least.
+        (slope_lo + hi) * 0.5
+    };
+    // Water: the mean water level of the wet neighbours (the paper averages all four; dry
+    // neighbours would turn every dip into a pond). Below it, the vertex is submerged bank.
+    let wet: Vec<f64> = around.iter().filter(|v| is_wet(v)).map(|v| v.water as f64).collect();
+    let water = if wet.is_empty() { g } else { (wet.iter().sum::<f64>() / wet.len() as f64).max(g) };
+    let mut v = Vertex::new(lift(pos, r, g), seed);
+    v.ground = g as f32;
+    v.water = water as f32;
+    v.level = 1;
+    (v, kinds)
+}
