@@ -61,6 +61,25 @@ enum Command {
         #[arg(long, default_value_t = 1024, value_parser = clap::value_parser!(u32).range(2..=16384))]
         raster_width: u32,
     },
+    /// Adapt the planet to one or more cameras (visited in order) and write the last view as
+    /// a .glb: terrain relative to a local origin (node translation) plus the water surface.
+    View {
+        #[command(flatten)]
+        planet: PlanetArgs,
+        /// Camera query: eye=X,Y,Z&target=X,Y,Z[&up=X,Y,Z][&fov=DEG][&width=PX][&height=PX]
+        /// [&land_px=PX][&water_px=PX]; metres, planet-centred (+Z north, longitude 0 on +X).
+        #[arg(long = "camera", required = true, allow_hyphen_values = true)]
+        cameras: Vec<String>,
+        /// Face budget: coarser targets until the view fits.
+        #[arg(long)]
+        max_faces: Option<usize>,
+        /// Output file.
+        #[arg(long, default_value = "view.glb")]
+        out: PathBuf,
+        /// Print adaption statistics as JSON.
+        #[arg(long)]
+        stats: bool,
+    },
     /// Time planet builds and print a table (base mesh + continents + rivers).
     Bench {
         /// Directory with the Earth maps.
@@ -147,6 +166,43 @@ fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -
     Ok(())
 }
 
+fn run_view(
+    planet: &PlanetArgs,
+    cameras: &[String],
+    max_faces: Option<usize>,
+    out: &std::path::Path,
+    stats: bool,
+) -> Result<(), String> {
+    let spec = planet.spec().map_err(|e| e.to_string())?;
+    let radius = spec.params.radius_m;
+    let cams = cameras
+        .iter()
+        .map(|q| riverworld::adapt::Camera::parse_query(q, radius).map(|(c, _)| c))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| e.to_string())?;
+    if max_faces == Some(0) {
+        return Err("--max-faces must be at least 1".into());
+    }
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
+    let mut adapter = riverworld::adapt::Adapter::new(built.mesh, spec.params.clone());
+    let mut last = None;
+    for cam in &cams {
+        last = Some(adapter.adapt(cam, max_faces));
+    }
+    let cam = cams.last().expect("at least one camera");
+    let origin = riverworld::export::view::local_origin(cam.eye, radius);
+    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin);
+    generate::write_outputs(
+        out.parent().unwrap_or(std::path::Path::new(".")),
+        &[(out.file_name().and_then(|n| n.to_str()).unwrap_or("view.glb"), glb)],
+    )
+    .map_err(|e| e.to_string())?;
+    if stats {
+        println!("{}", serde_json::to_string_pretty(&last).expect("stats serialise"));
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
@@ -160,6 +216,15 @@ fn main() -> ExitCode {
                 }
             }
         },
+        Command::View { planet, cameras, max_faces, out, stats } => {
+            match run_view(&planet, &cameras, max_faces, &out, stats) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
         Command::Bench { maps, runs, quick } => {
             riverworld::bench::run(&maps, runs.max(1), quick);
             ExitCode::SUCCESS

@@ -53,7 +53,14 @@ pub fn planet_glb(mesh: &Mesh, params: &Params) -> Vec<u8> {
 
 /// The base mesh as a [`GlbMesh`] (glTF axes, no translation).
 pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
+    terrain_mesh(mesh, params, None)
+}
+
+/// The terrain of a mesh as a [`GlbMesh`] in glTF axes; with `origin` (planet frame), positions
+/// are `f32` offsets from it computed in `f64`, and the origin becomes the node translation.
+pub fn terrain_mesh(mesh: &Mesh, params: &Params, origin: Option<glam::DVec3>) -> GlbMesh {
     let normals = surface_normals(mesh);
+    let o = origin.unwrap_or(glam::DVec3::ZERO);
     let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
     let sea = params.sea_level_m;
     let mut out = GlbMesh {
@@ -61,10 +68,10 @@ pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
         normals: Vec::with_capacity(mesh.vertices.len()),
         colors: Vec::with_capacity(mesh.vertices.len()),
         indices: Vec::with_capacity(mesh.faces.len() * 3),
-        translation: None,
+        translation: origin.map(|o| to_gltf_axes(o.to_array())),
     };
     for (v, n) in mesh.vertices.iter().zip(&normals) {
-        out.positions.push(to_gltf_axes(v.pos).map(|x| x as f32));
+        out.positions.push(to_gltf_axes((v.p() - o).to_array()).map(|x| x as f32));
         let n = to_gltf_axes(n.to_array()).map(|x| x as f32);
         let len = n.iter().map(|x| x * x).sum::<f32>().sqrt();
         out.normals.push(if len > 0.0 { n.map(|x| x / len) } else { [0.0, 1.0, 0.0] });

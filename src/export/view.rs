@@ -1,0 +1,91 @@
+//! A view-dependent mesh (paper §5) as glTF: the adapted terrain relative to a local origin, and
+//! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
+
+use super::climate::water_colour;
+use super::glb::{encode_glb, terrain_mesh, to_gltf_axes, GlbMesh};
+use crate::mesh::terrain::lift;
+use crate::mesh::Mesh;
+use crate::params::Params;
+use glam::DVec3;
+
+/// Alpha of the water surface.
+const WATER_ALPHA: u8 = 200;
+
+/// The local origin for a camera: the point of the base sphere below the eye, so positions near
+/// the viewer are small `f32` offsets (sub-millimetre within tens of kilometres).
+pub fn local_origin(eye: DVec3, radius: f64) -> DVec3 {
+    eye.normalize_or(DVec3::X) * radius
+}
+
+/// Terrain plus water surface as one `.glb`, positions relative to `origin`.
+pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Vec<u8> {
+    encode_glb(&[terrain_mesh(mesh, params, Some(origin)), water_mesh(mesh, params, origin)])
+}
+
+/// Triangles with at least one submerged corner, at water altitude (dry corners at the ground,
+/// so the surface meets the shore); colour by depth.
+pub fn water_mesh(mesh: &Mesh, params: &Params, origin: DVec3) -> GlbMesh {
+    let mut out = GlbMesh { translation: Some(to_gltf_axes(origin.to_array())), ..GlbMesh::default() };
+    let mut slot = vec![u32::MAX; mesh.vertices.len()];
+    let up = to_gltf_axes(origin.normalize_or(DVec3::X).to_array()).map(|x| x as f32);
+    for f in &mesh.faces {
+        if !f.v.iter().any(|&v| mesh.vertices[v as usize].submerged()) {
+            continue;
+        }
+        for &v in &f.v {
+            if slot[v as usize] == u32::MAX {
+                let vert = &mesh.vertices[v as usize];
+                let level = vert.water.max(vert.ground) as f64;
+                let p = lift(vert.p(), mesh.radius, level) - origin;
+                slot[v as usize] = out.positions.len() as u32;
+                out.positions.push(to_gltf_axes(p.to_array()).map(|x| x as f32));
+                let n = to_gltf_axes(vert.p().normalize().to_array()).map(|x| x as f32);
+                out.normals.push(if n.iter().all(|x| x.is_finite()) { n } else { up });
+                let [r, g, b] = water_colour((vert.water - vert.ground).max(0.0) as f64);
+                out.colors.push([r, g, b, WATER_ALPHA]);
+            }
+            out.indices.push(slot[v as usize]);
+        }
+    }
+    let _ = params;
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::adapt::{Adapter, Camera};
+
+    #[test]
+    fn view_glb_keeps_centimetres_near_the_origin() {
+        let planet = crate::export::test_planet();
+        let p = Params { base_faces: 2000, ..Params::default() };
+        let r = p.radius_m;
+        let dir = crate::build::continents::direction(5.0, 10.0);
+        let eye = dir * (r + 3000.0 + 2000.0);
+        let cam = Camera::new(eye, dir * (r + 3000.0) + DVec3::Z * 5000.0, None, 60.0, 320, 180, 4.0, 20.0, r).unwrap();
+        let mut a = Adapter::new(planet.mesh.clone(), p.clone());
+        a.adapt(&cam, Some(200_000));
+        let origin = local_origin(eye, r);
+        let terrain = terrain_mesh(a.mesh(), &p, Some(origin));
+        // Every vertex near the origin is reproduced to 1 cm from its f32 offset + f64 origin.
+        let o = to_gltf_axes(origin.to_array());
+        let mut near = 0;
+        for (v, q) in a.mesh().vertices.iter().zip(&terrain.positions) {
+            let true_pos = to_gltf_axes(v.pos);
+            if v.p().distance(origin) < 50_000.0 {
+                near += 1;
+                for k in 0..3 {
+                    assert!((o[k] + q[k] as f64 - true_pos[k]).abs() < 0.01);
+                }
+            }
+        }
+        assert!(near > 100, "{near}");
+        let glb = view_glb(a.mesh(), &p, origin);
+        assert_eq!(&glb[..4], b"glTF");
+        assert_eq!(view_glb(a.mesh(), &p, origin), glb);
+        let water = water_mesh(a.mesh(), &p, origin);
+        assert!(!water.indices.is_empty());
+        assert!(water.indices.iter().all(|&i| (i as usize) < water.positions.len()));
+    }
+}
