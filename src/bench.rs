@@ -1,5 +1,6 @@
 //! `riverworld bench`: times base-mesh construction (paper §4, Table 4's "creating the base
-//! mesh") for random planets and Earth maps, and prints a Markdown table.
+//! mesh") for random planets and Earth maps, then view-dependent adaption on the Earth planet
+//! (`bench_adapt`), and prints Markdown tables.
 
 use crate::build::{build_planet, PlanetSpec};
 use crate::generate::{load_map, MapSource};
@@ -66,5 +67,14 @@ pub fn run(maps: &Path, runs: usize, quick: bool) {
             ms,
             s.faces as f64 / ms / 1000.0
         );
+    }
+    let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
+    match load_map(&src, &MapLimits::default()) {
+        Ok(map) => {
+            println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, land 2 px / water 10 px\n");
+            let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
+            crate::bench_adapt::run(&spec);
+        }
+        Err(e) => eprintln!("skipping the adaption table: {e}"),
     }
 }

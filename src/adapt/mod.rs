@@ -99,19 +99,32 @@ impl Adapter {
     }
 
     /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit.
+    ///
+    /// With the camera fixed, an edge's answer never changes, so the flags are computed once
+    /// and then only for edges the splits touched; collapses are looked for in the first pass,
+    /// after a pass that collapsed something (coarsening unwinds level by level), and before
+    /// convergence is declared.
     fn run(&mut self, view: &View, cap: Option<usize>, stats: &mut AdaptStats) -> bool {
+        let mut wants = state::edge_wants(&self.mesh, view);
+        let mut look_for_collapses = true;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
-            let wants = state::edge_wants(&self.mesh, view);
             let ready = split::select_splits(&self.mesh, &wants);
             let splits = split::apply_splits(&mut self.mesh, &ready, &self.params);
-            let wants = if splits > 0 { state::edge_wants(&self.mesh, view) } else { wants };
-            let demanded = state::demanded(&self.mesh, &wants);
-            let sites = state::collapse_candidates(&self.mesh, view, &demanded);
-            let collapses = collapse::apply_collapses(&mut self.mesh, &sites);
-            if collapses > 0 {
-                compact::compact(&mut self.mesh);
+            if splits > 0 {
+                state::update_wants(&self.mesh, view, &mut wants, &ready);
             }
+            let mut collapses = 0;
+            if look_for_collapses || splits == 0 {
+                let demanded = state::demanded(&self.mesh, &wants);
+                let sites = state::collapse_candidates(&self.mesh, view, &demanded);
+                collapses = collapse::apply_collapses(&mut self.mesh, &sites);
+                if collapses > 0 {
+                    compact::compact(&mut self.mesh);
+                    wants = state::edge_wants(&self.mesh, view);
+                }
+            }
+            look_for_collapses = collapses > 0;
             stats.splits += splits;
             stats.collapses += collapses;
             if splits == 0 && collapses == 0 {

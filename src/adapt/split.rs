@@ -33,7 +33,8 @@ pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
 }
 
 /// Splits the given ready edges; each owns its two faces, so the new vertices are computed in
-/// parallel and the topology is then changed edge by edge.
+/// parallel and the topology is then changed edge by edge. Returns the number of splits; the
+/// split edges' slots now hold their first halves.
 pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
     let made: Vec<(SplitSite, Vertex, [EdgeKind; 4])> = edges
         .par_iter()
@@ -43,12 +44,5 @@ pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
             (site, v, kinds)
         })
         .collect();
-    let n = made.len();
-    mesh.vertices.reserve(n);
-    mesh.edges.reserve(3 * n);
-    mesh.faces.reserve(2 * n);
-    for (site, v, kinds) in made {
-        mesh.split_edge(&site, v, kinds);
-    }
-    n
+    mesh.split_edges(&made).len()
 }

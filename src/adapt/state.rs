@@ -10,20 +10,28 @@ use super::camera::View;
 use crate::mesh::{CollapseSite, EdgeKind, Mesh};
 use rayon::prelude::*;
 
+/// Whether edge `e` wants to be split for `view`.
+#[inline]
+pub fn wants(mesh: &Mesh, view: &View, e: u32) -> bool {
+    let edge = &mesh.edges[e as usize];
+    view.wants_split(edge.lod_len as f64, mesh.midpoint(e), edge.lod_radius as f64, edge.kind == EdgeKind::Sea)
+}
+
 /// Whether each edge wants to be split for `view`.
 pub fn edge_wants(mesh: &Mesh, view: &View) -> Vec<bool> {
-    mesh.edges
-        .par_iter()
-        .enumerate()
-        .map(|(e, edge)| {
-            view.wants_split(
-                edge.lod_len as f64,
-                mesh.midpoint(e as u32),
-                edge.lod_radius as f64,
-                edge.kind == EdgeKind::Sea,
-            )
-        })
-        .collect()
+    (0..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect()
+}
+
+/// Brings `flags` up to date after splits: an edge's answer depends only on its own bounds and
+/// end points, so only the split edges' slots (`changed`) and the appended edges need it.
+pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[u32]) {
+    let old = flags.len();
+    let fresh: Vec<bool> = (old as u32..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect();
+    flags.extend(fresh);
+    let redo: Vec<(u32, bool)> = changed.par_iter().map(|&e| (e, wants(mesh, view, e))).collect();
+    for (e, w) in redo {
+        flags[e as usize] = w;
+    }
 }
 
 /// Edges that must be split for the wanted ones to be: the wanted edges and every refinement

@@ -66,68 +66,109 @@ impl Mesh {
     /// Splits the edge at `site`, inserting `vertex` with inner edge kinds `kinds` (`[e1..e4]`).
     /// Lengths and level-of-detail bounds of the four edges are set; the new vertex keeps the
     /// split edge's bounds for its collapse.
-    pub fn split_edge(&mut self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4]) -> Split {
+    pub fn split_edge(&mut self, site: &SplitSite, vertex: Vertex, kinds: [EdgeKind; 4]) -> Split {
+        let ids = self.split_ids(0);
+        let plan = self.plan_split(site, vertex, kinds, ids);
+        self.vertices.push(plan.vertex);
+        self.edges.extend_from_slice(&plan.new_edges);
+        self.faces.extend_from_slice(&plan.new_faces);
+        self.write_split(&plan);
+        plan.split
+    }
+
+    /// Splits many ready edges at once (each the refinement edge of both its faces, so no two
+    /// share a face). The plans are made in parallel from the unchanged mesh, then written:
+    /// entities each split owns go in parallel-friendly bulk, shared edges' face links after.
+    pub fn split_edges(&mut self, items: &[(SplitSite, Vertex, [EdgeKind; 4])]) -> Vec<Split> {
+        use rayon::prelude::*;
+        let plans: Vec<SplitPlan> = items
+            .par_iter()
+            .enumerate()
+            .map(|(i, (site, v, kinds))| self.plan_split(site, *v, *kinds, self.split_ids(i)))
+            .collect();
+        self.vertices.extend(plans.iter().map(|p| p.vertex));
+        self.edges.extend(plans.iter().flat_map(|p| p.new_edges));
+        self.faces.extend(plans.iter().flat_map(|p| p.new_faces));
+        for plan in &plans {
+            self.write_split(plan);
+        }
+        plans.into_iter().map(|p| p.split).collect()
+    }
+
+    /// Ids the `i`-th split of a batch gets: vertex, edges `e2, e3, e4`, faces `f3, f4`.
+    fn split_ids(&self, i: usize) -> (u32, u32, u32) {
+        let i = i as u32;
+        (self.vertices.len() as u32 + i, self.edges.len() as u32 + 3 * i, self.faces.len() as u32 + 2 * i)
+    }
+
+    /// Everything a split writes, computed from the mesh before it.
+    fn plan_split(&self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4], ids: (u32, u32, u32)) -> SplitPlan {
         let SplitSite { edge: e1, a, b, t, d, f1, f2 } = *site;
-        let m = self.vertices.len() as u32;
-        let (e2, e3, e4) = {
-            let n = self.edges.len() as u32;
-            (n, n + 1, n + 2)
-        };
-        let (f3, f4) = {
-            let n = self.faces.len() as u32;
-            (n, n + 1)
-        };
+        let (m, e2, f3) = ids;
+        let (e3, e4, f4) = (e2 + 1, e2 + 2, f3 + 1);
         let old1 = self.faces[f1 as usize];
         let old2 = self.faces[f2 as usize];
         let parent = self.edges[e1 as usize];
         let level = parent.level + 1;
-        let parent_mid = (self.pos(a) + self.pos(b)) * 0.5;
+        let (pa, pb, pm) = (self.pos(a), self.pos(b), vertex.p());
+        let parent_mid = (pa + pb) * 0.5;
 
         // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
         let face = |v: [u32; 3], e: [u32; 3], kind| Face { v, e, kind, _pad: [0; 3] };
-        self.faces[f1 as usize] = face([m, t, a], [old1.e[2], e1, e2], old1.kind);
-        self.faces.push(face([m, b, t], [old1.e[1], e2, e3], old1.kind));
-        self.faces[f2 as usize] = face([m, a, d], [old2.e[1], e4, e1], old2.kind);
-        self.faces.push(face([m, d, b], [old2.e[2], e3, e4], old2.kind));
-
-        // Outer edges that moved to the new faces.
-        self.replace_face(old1.e[1], f1, f3);
-        self.replace_face(old2.e[2], f2, f4);
-
-        // Edges.
-        let mk = |v: [u32; 2], f: [u32; 2], kind| Edge {
-            v,
-            f,
-            length: 0.0,
-            lod_len: 0.0,
-            lod_radius: 0.0,
-            level,
-            kind,
-            _pad: 0,
+        let faces = [
+            face([m, t, a], [old1.e[2], e1, e2], old1.kind),
+            face([m, a, d], [old2.e[1], e4, e1], old2.kind),
+            face([m, b, t], [old1.e[1], e2, e3], old1.kind),
+            face([m, d, b], [old2.e[2], e3, e4], old2.kind),
+        ];
+        let edge = |v: [u32; 2], f: [u32; 2], kind, p: glam::DVec3, q: glam::DVec3| {
+            let length = p.distance(q) as f32;
+            let offset = ((p + q) * 0.5).distance(parent_mid);
+            Edge {
+                v,
+                f,
+                length,
+                lod_len: length.min(parent.lod_len),
+                lod_radius: (LOD_RADIUS * length).min(round_down(parent.lod_radius as f64 - offset)),
+                level,
+                kind,
+                _pad: 0,
+            }
         };
-        self.edges[e1 as usize] = mk([a, m], [f1, f2], kinds[0]);
-        self.edges.push(mk([m, t], [f1, f3], kinds[1]));
-        self.edges.push(mk([m, b], [f3, f4], kinds[2]));
-        self.edges.push(mk([m, d], [f4, f2], kinds[3]));
-
-        // Vertices.
+        let edges = [
+            edge([a, m], [f1, f2], kinds[0], pa, pm),
+            edge([m, t], [f1, f3], kinds[1], pm, self.pos(t)),
+            edge([m, b], [f3, f4], kinds[2], pm, pb),
+            edge([m, d], [f4, f2], kinds[3], pm, self.pos(d)),
+        ];
         vertex.edge = e1;
         vertex.parent_lod = [parent.lod_len, parent.lod_radius];
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
-        self.vertices.push(vertex);
-        if self.vertices[b as usize].edge == e1 {
-            self.vertices[b as usize].edge = e3;
+        SplitPlan {
+            split: Split { v: m, e: [e1, e2, e3, e4], f: [f1, f2, f3, f4] },
+            vertex,
+            own_faces: [faces[0], faces[1]],
+            new_faces: [faces[2], faces[3]],
+            own_edge: edges[0],
+            new_edges: [edges[1], edges[2], edges[3]],
+            relinks: [(old1.e[1], f1, f3), (old2.e[2], f2, f4)],
+            b,
         }
-        for e in [e1, e2, e3, e4] {
-            let [p, q] = self.edges[e as usize].v.map(|v| self.pos(v));
-            let len = p.distance(q);
-            let offset = ((p + q) * 0.5).distance(parent_mid);
-            let edge = &mut self.edges[e as usize];
-            edge.length = len as f32;
-            edge.lod_len = edge.length.min(parent.lod_len);
-            edge.lod_radius = (LOD_RADIUS * edge.length).min(round_down(parent.lod_radius as f64 - offset));
+    }
+
+    /// Writes the parts of a plan that touch existing entities.
+    fn write_split(&mut self, plan: &SplitPlan) {
+        let [e1, _, e3, _] = plan.split.e;
+        let [f1, f2, _, _] = plan.split.f;
+        self.faces[f1 as usize] = plan.own_faces[0];
+        self.faces[f2 as usize] = plan.own_faces[1];
+        self.edges[e1 as usize] = plan.own_edge;
+        for (e, from, to) in plan.relinks {
+            self.replace_face(e, from, to);
         }
-        Split { v: m, e: [e1, e2, e3, e4], f: [f1, f2, f3, f4] }
+        if self.vertices[plan.b as usize].edge == e1 {
+            self.vertices[plan.b as usize].edge = e3;
+        }
     }
 
     /// In edge `e`, replaces face `from` by face `to`.
@@ -163,6 +204,22 @@ impl Mesh {
         }
         done
     }
+}
+
+/// What one split writes (see [`Mesh::split_edges`]).
+struct SplitPlan {
+    split: Split,
+    vertex: Vertex,
+    /// New contents of `f1`, `f2` and `e1`.
+    own_faces: [Face; 2],
+    own_edge: Edge,
+    /// `f3, f4` and `e2, e3, e4`, appended.
+    new_faces: [Face; 2],
+    new_edges: [Edge; 3],
+    /// Outer edges whose face link moves to a new face: `(edge, from, to)`.
+    relinks: [(u32, u32, u32); 2],
+    /// The old edge's second end, whose `edge` link may need to move to `e3`.
+    b: u32,
 }
 
 /// `x` as the largest `f32` not above it, so nested balls stay nested after rounding.
