@@ -4,6 +4,7 @@
 
 pub mod adapt;
 pub mod bench;
+pub mod bench_adapt;
 pub mod build;
 pub mod export;
 pub mod generate;
