@@ -187,3 +187,43 @@ fn bad_input_is_refused_with_exit_code_2() {
     // Nothing was written for refused inputs.
     assert!(!out.join("planet.glb").exists());
 }
+
+#[test]
+fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
+    let dir = scratch("view");
+    let cam = "eye=6500000,0,400000&target=6374000,0,300000&width=320&height=180&land_px=6";
+    let run_view = |out: &Path| {
+        run(&[
+            "view",
+            "--faces",
+            "2000",
+            "--camera",
+            cam,
+            "--max-faces",
+            "100000",
+            "--out",
+            out.to_str().unwrap(),
+            "--stats",
+        ])
+    };
+    let (a, b) = (dir.join("a.glb"), dir.join("b.glb"));
+    let o = run_view(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(stats["faces"].as_u64().unwrap() > 2000 && stats["faces"].as_u64().unwrap() <= 100_000, "{stats}");
+    assert_eq!(stats["converged"], true);
+    assert!(run_view(&b).status.success());
+    let bytes = std::fs::read(&a).unwrap();
+    assert_eq!(&bytes[..4], b"glTF");
+    assert!(bytes == std::fs::read(&b).unwrap(), "view.glb differs between runs");
+    for (bad, needle) in [
+        ("eye=0,0,100&target=0,0,0", "inside the planet"),
+        ("eye=0,0,1e7&target=0,0,1e7", "equals the eye"),
+        ("eye=0,0,1e7&target=0,0,0&width=0", "width"),
+        ("eye=nan,0,1e7&target=0,0,0", "eye"),
+    ] {
+        let o = run(&["view", "--faces", "200", "--camera", bad, "--out", dir.join("x.glb").to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains(needle), "{bad}: {}", String::from_utf8_lossy(&o.stderr));
+    }
+}

@@ -193,3 +193,26 @@ fn coarsening_back_to_orbit_matches_a_direct_orbit_view() {
     let (ground, _) = adapted(&[camera(0.0, 0.0, 10_000.0, 30_000.0, 4.0)]);
     assert!(direct.faces.len() < ground.faces.len(), "{} vs {}", direct.faces.len(), ground.faces.len());
 }
+
+mod paths {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn cam_strategy() -> impl Strategy<Value = Camera> {
+        (-60.0f64..60.0, -180.0f64..180.0, 3.0f64..6.3, 1.0f64..4.0)
+            .prop_map(|(lat, lon, log_h, ahead)| camera(lat, lon, 10f64.powf(log_h), 10f64.powf(log_h) * ahead, 6.0))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 6, ..ProptestConfig::default() })]
+        #[test]
+        fn any_camera_path_ends_in_the_direct_mesh(path in prop::collection::vec(cam_strategy(), 1..4), last in cam_strategy()) {
+            let mut all = path.clone();
+            all.push(last.clone());
+            let (via, s1) = adapted(&all);
+            let (direct, s2) = adapted(std::slice::from_ref(&last));
+            prop_assert!(s1.converged && s2.converged);
+            prop_assert!(canonical(&via) == canonical(&direct));
+        }
+    }
+}
