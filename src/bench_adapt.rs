@@ -19,8 +19,18 @@ pub fn ground_camera(radius: f64, sea: f64, lat: f64, lon: f64, height: f64, ahe
     let heading = north * b.cos() + east * b.sin();
     let eye = up * (radius + sea + height);
     let target = (up + heading * (ahead / radius)).normalize() * (radius + sea);
-    Camera::new(eye, target, None, 60.0, 1920, 1080, crate::adapt::camera::DEFAULT_LAND_PX, crate::adapt::camera::DEFAULT_WATER_PX, radius)
-        .expect("benchmark camera is valid")
+    Camera::new(
+        eye,
+        target,
+        None,
+        60.0,
+        1920,
+        1080,
+        crate::adapt::camera::DEFAULT_LAND_PX,
+        crate::adapt::camera::DEFAULT_WATER_PX,
+        radius,
+    )
+    .expect("benchmark camera is valid")
 }
 
 /// The fly-through: from orbit down to a river valley in `frames` steps.
@@ -54,7 +64,8 @@ pub fn run(spec: &PlanetSpec) {
         .max_by(|&a, &b| graph.tributaries(a).cmp(&graph.tributaries(b)).then(b.cmp(&a)))
         .unwrap_or(0);
     let (rlat, rlon) = crate::build::continents::lat_lon(planet.mesh.pos(river));
-    let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 2.0, 10.0, r).expect("orbit camera");
+    let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 2.0, 10.0, r)
+        .expect("orbit camera");
     let views = [
         ("orbit view", orbit),
         ("ground view 1 (2 km up)", ground_camera(r, sea, rlat, rlon, 2000.0, 20_000.0, 0.0)),

@@ -26,7 +26,8 @@ pub fn edge_wants(mesh: &Mesh, view: &View) -> Vec<bool> {
 /// end points, so only the split edges' slots (`changed`) and the appended edges need it.
 pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[u32]) {
     let old = flags.len();
-    let fresh: Vec<bool> = (old as u32..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect();
+    let fresh: Vec<bool> =
+        (old as u32..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect();
     flags.extend(fresh);
     let redo: Vec<(u32, bool)> = changed.par_iter().map(|&e| (e, wants(mesh, view, e))).collect();
     for (e, w) in redo {

@@ -102,7 +102,13 @@ impl Mesh {
     }
 
     /// Everything a split writes, computed from the mesh before it.
-    fn plan_split(&self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4], ids: (u32, u32, u32)) -> SplitPlan {
+    fn plan_split(
+        &self,
+        site: &SplitSite,
+        mut vertex: Vertex,
+        kinds: [EdgeKind; 4],
+        ids: (u32, u32, u32),
+    ) -> SplitPlan {
         let SplitSite { edge: e1, a, b, t, d, f1, f2 } = *site;
         let (m, e2, f3) = ids;
         let (e3, e4, f4) = (e2 + 1, e2 + 2, f3 + 1);
