@@ -12,3 +12,4 @@ pub mod maps;
 pub mod mesh;
 pub mod params;
 pub mod rng;
+pub mod server;

@@ -80,6 +80,9 @@ enum Command {
         #[arg(long)]
         stats: bool,
     },
+    /// Serve planets over HTTP (see openapi.yaml); without options, the built-in planet `earth`
+    /// on 127.0.0.1:8080 with inputs stored under ./data.
+    Serve(ServeArgs),
     /// Time planet builds and print a table (base mesh + continents + rivers).
     Bench {
         /// Directory with the Earth maps.
@@ -92,6 +95,81 @@ enum Command {
         #[arg(long)]
         quick: bool,
     },
+}
+
+/// Options of `riverworld serve`.
+#[derive(clap::Args, Clone, Debug)]
+struct ServeArgs {
+    /// Address to listen on.
+    #[arg(long, default_value = "127.0.0.1:8080")]
+    addr: std::net::SocketAddr,
+    /// Directory that stores the planets' inputs (request.json and map.bin per planet).
+    #[arg(long, default_value = "data")]
+    data: PathBuf,
+    /// Store URL instead of --data: file:///DIR, or s3://BUCKET/PREFIX in a build with
+    /// `--features s3` (credentials and region from the AWS_* environment variables).
+    #[arg(long)]
+    store: Option<String>,
+    /// Build jobs that may wait for a worker; more answer 429.
+    #[arg(long, default_value_t = 8)]
+    max_queue: usize,
+    /// Build worker threads.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
+    workers: u32,
+    /// In-memory cache of built planets and rendered files, MiB.
+    #[arg(long, default_value_t = 512)]
+    cache_mb: usize,
+    /// Largest request body (a map upload), MiB.
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    body_limit_mb: u32,
+    /// Allowed CORS origins: * or a comma-separated list.
+    #[arg(long, default_value = "*")]
+    cors_origin: String,
+    /// Largest max_faces a view.glb request may ask for.
+    #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    max_faces_cap: u64,
+    /// Seconds before a request is answered 503 timeout.
+    #[arg(long, default_value_t = 120, value_parser = clap::value_parser!(u64).range(1..))]
+    timeout_s: u64,
+    /// Do not serve the built-in planet earth.
+    #[arg(long)]
+    no_default_planet: bool,
+}
+
+fn run_serve(args: ServeArgs) -> Result<(), String> {
+    use riverworld::server;
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info,tower_http=debug")),
+        )
+        .with_writer(std::io::stderr)
+        .with_ansi(std::io::stderr().is_terminal())
+        .init();
+    let config = server::Config {
+        data_dir: args.data,
+        store_url: args.store,
+        max_queue: args.max_queue,
+        workers: args.workers as usize,
+        cache_bytes: args.cache_mb.saturating_mul(1 << 20),
+        body_limit: args.body_limit_mb as usize * (1 << 20),
+        cors_origin: args.cors_origin,
+        max_faces_cap: args.max_faces_cap as usize,
+        request_timeout: std::time::Duration::from_secs(args.timeout_s),
+        default_planet: !args.no_default_planet,
+        build_delay: std::time::Duration::ZERO,
+    };
+    let runtime = tokio::runtime::Runtime::new().map_err(|e| format!("cannot start the runtime: {e}"))?;
+    runtime.block_on(async move {
+        let listener = tokio::net::TcpListener::bind(args.addr)
+            .await
+            .map_err(|e| format!("cannot listen on {}: {e}", args.addr))?;
+        let server = server::serve(config, listener).await?;
+        eprintln!("riverworld: serving on http://{}", server.local_addr());
+        let _ = tokio::signal::ctrl_c().await;
+        eprintln!("riverworld: shutting down");
+        server.shutdown().await.map_err(|e| e.to_string())
+    })
 }
 
 fn parse_kind(s: &str) -> Result<MapKind, String> {
@@ -225,6 +303,13 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Command::Serve(args) => match run_serve(args) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(2)
+            }
+        },
         Command::Bench { maps, runs, quick } => {
             riverworld::bench::run(&maps, runs.max(1), quick);
             ExitCode::SUCCESS

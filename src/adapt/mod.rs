@@ -109,7 +109,9 @@ impl Adapter {
         let mut look_for_collapses = true;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
-            let ready = split::select_splits(&self.mesh, &wants);
+            // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
+            let over_cap = cap.is_some_and(|c| self.mesh.faces.len() > c);
+            let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
             let splits = split::apply_splits(&mut self.mesh, &ready, &self.params);
             if splits > 0 {
                 state::update_wants(&self.mesh, view, &mut wants, &ready);
@@ -128,10 +130,10 @@ impl Adapter {
             stats.splits += splits;
             stats.collapses += collapses;
             if splits == 0 && collapses == 0 {
-                return true;
+                return !over_cap;
             }
-            if cap.is_some_and(|c| self.mesh.faces.len() > c) {
-                return false;
+            if !over_cap && cap.is_some_and(|c| self.mesh.faces.len() > c) {
+                look_for_collapses = true;
             }
         }
         false

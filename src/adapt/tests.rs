@@ -216,3 +216,35 @@ mod paths {
         }
     }
 }
+
+#[test]
+fn centimetre_edges_at_earth_radius() {
+    // Refine around one land point with the adaption split rules until edges are ~1 cm: the
+    // f64 positions keep every vertex distinct and every face properly oriented.
+    let params = Params::default();
+    let mut m = base().mesh.clone();
+    let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
+    let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;
+    let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| crate::mesh::altitude::split_vertex(m, site, &params);
+    let mut shortest = f32::MAX;
+    for _ in 0..400 {
+        let f = (0..m.faces.len() as u32)
+            .min_by(|&a, &b| {
+                let c = |f: u32| m.faces[f as usize].v.iter().map(|&v| m.pos(v)).sum::<DVec3>().distance(target * 3.0);
+                c(a).total_cmp(&c(b))
+            })
+            .unwrap();
+        let e = m.faces[f as usize].e[0];
+        if m.edges[e as usize].length < 0.012 {
+            break;
+        }
+        m.refine_edge(e, &mut make);
+        shortest = m.edges.iter().map(|e| e.length).fold(f32::MAX, f32::min);
+    }
+    m.validate().unwrap();
+    assert!(shortest < 0.02, "stopped at {shortest} m");
+    let mut keys: Vec<[u64; 3]> = m.vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
+    keys.sort_unstable();
+    keys.dedup();
+    assert_eq!(keys.len(), m.vertices.len());
+}

@@ -1,0 +1,159 @@
+//! The body of `POST /v1/planets`: JSON `{"seed", "params"}` or `multipart/form-data` with a map,
+//! checked completely (the map decoded) before anything is accepted, and the planet id that
+//! names the inputs.
+
+use super::error::ApiError;
+use super::store::{MapMeta, StoredInput};
+use crate::maps::{GeoBounds, Map, MapError, MapKind, MapLimits};
+use crate::params::PlanetRequest;
+use axum::body::{Body, Bytes};
+use axum::extract::{FromRequest, Multipart};
+use axum::http::{header, Request, StatusCode};
+use sha2::{Digest, Sha256};
+
+/// Hex characters of an id.
+pub const ID_HEX: usize = 16;
+
+/// A validated planet request with its map bytes.
+pub struct NewPlanet {
+    pub input: StoredInput,
+    pub map: Option<Bytes>,
+}
+
+/// Id of a planet: the first 16 hex characters of SHA-256 over a canonical encoding of the
+/// parameters, the seed and the map with how it is read.
+pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
+    let mut h = Sha256::new();
+    h.update(b"riverworld planet v1\0params\0");
+    h.update(serde_json::to_vec(&input.params).expect("params serialise"));
+    h.update(b"\0seed\0");
+    h.update(input.seed.to_le_bytes());
+    match (&input.map, map) {
+        (Some(meta), Some(bytes)) => {
+            h.update(b"\0map\0");
+            h.update(meta.kind.as_str());
+            h.update(b"\0range\0");
+            h.update(serde_json::to_vec(&meta.range_m).expect("range serialises"));
+            h.update(b"\0bounds\0");
+            h.update(serde_json::to_vec(&meta.bounds).expect("bounds serialise"));
+            h.update(b"\0bytes\0");
+            h.update((bytes.len() as u64).to_le_bytes());
+            h.update(bytes);
+        }
+        _ => h.update(b"\0no map"),
+    }
+    let digest = h.finalize();
+    digest.iter().take(ID_HEX / 2).map(|b| format!("{b:02x}")).collect()
+}
+
+/// Reads and validates a POST body of either content type.
+pub async fn read(req: Request<Body>, body_limit: usize) -> Result<NewPlanet, ApiError> {
+    let ctype = req.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_string();
+    let mime = ctype.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
+    match mime.as_str() {
+        "application/json" => {
+            let bytes = Bytes::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
+            let text = std::str::from_utf8(&bytes)
+                .map_err(|_| ApiError::unprocessable("invalid_params", "body", "the body is not UTF-8"))?;
+            let request = PlanetRequest::from_json(text).map_err(|e| ApiError::from_params(&e))?;
+            Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: None }, map: None })
+        }
+        "multipart/form-data" => {
+            let mp = Multipart::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
+            read_multipart(mp, body_limit).await
+        }
+        "" => Err(unsupported("no Content-Type")),
+        other => Err(unsupported(other)),
+    }
+}
+
+fn unsupported(what: &str) -> ApiError {
+    ApiError::new(
+        StatusCode::UNSUPPORTED_MEDIA_TYPE,
+        "unsupported_media_type",
+        format!("{what}: send application/json or multipart/form-data"),
+    )
+}
+
+/// An error while reading the body: over the limit (413) or unreadable (400).
+fn body_error(status: StatusCode, text: String) -> ApiError {
+    if status == StatusCode::PAYLOAD_TOO_LARGE {
+        ApiError::new(status, "body_too_large", "the request body is over the size limit")
+    } else {
+        ApiError::new(StatusCode::BAD_REQUEST, "bad_request", text)
+    }
+}
+
+fn text_part(name: &str, bytes: &[u8]) -> Result<String, ApiError> {
+    String::from_utf8(bytes.to_vec())
+        .map_err(|_| ApiError::unprocessable("invalid_field", name, format!("{name} is not UTF-8 text")))
+}
+
+async fn read_multipart(mut mp: Multipart, body_limit: usize) -> Result<NewPlanet, ApiError> {
+    let (mut map, mut kind, mut range, mut bounds, mut seed, mut params) = (None, None, None, None, None, None);
+    loop {
+        let field = match mp.next_field().await {
+            Ok(Some(f)) => f,
+            Ok(None) => break,
+            Err(e) => return Err(body_error(e.status(), e.body_text())),
+        };
+        let name = field.name().unwrap_or("").to_string();
+        let bytes = field.bytes().await.map_err(|e| body_error(e.status(), e.body_text()))?;
+        match name.as_str() {
+            "map" => map = Some(bytes),
+            "map_kind" => {
+                kind = Some(text_part(&name, &bytes)?.parse::<MapKind>().map_err(|e| ApiError::from_map(&e))?)
+            }
+            "map_range" => {
+                let text = text_part(&name, &bytes)?;
+                range = Some(crate::generate::parse_range(&text).map_err(|e| ApiError::from_map(&e))?);
+            }
+            "map_bounds" => {
+                let text = text_part(&name, &bytes)?;
+                bounds = Some(GeoBounds::parse(&text).map_err(|e| ApiError::from_map(&e))?);
+            }
+            "seed" => {
+                let text = text_part(&name, &bytes)?;
+                let s = text.trim().parse::<u64>().map_err(|_| {
+                    ApiError::unprocessable("invalid_params", "seed", format!("{text:?} is not a whole number"))
+                })?;
+                seed = Some(s);
+            }
+            "params" => {
+                let text = text_part(&name, &bytes)?;
+                let value: serde_json::Value = serde_json::from_str(&text)
+                    .map_err(|e| ApiError::unprocessable("invalid_params", "params", e.to_string()))?;
+                params = Some(value);
+            }
+            _ => {
+                return Err(ApiError::unprocessable(
+                    "unknown_field",
+                    name.clone(),
+                    format!("unknown part {name:?}: expected map, map_kind, map_range, map_bounds, seed or params"),
+                ))
+            }
+        }
+    }
+    let map = map.ok_or_else(|| ApiError::unprocessable("missing_map", "map", "the map part is missing"))?;
+    let body = serde_json::json!({ "seed": seed.unwrap_or(0), "params": params.unwrap_or(serde_json::json!({})) });
+    let request = PlanetRequest::from_json(&body.to_string()).map_err(|e| ApiError::from_params(&e))?;
+    let is_tiff = map.starts_with(b"II*\0") || map.starts_with(b"MM\0*");
+    let kind = kind.unwrap_or(if is_tiff || range.is_some() { MapKind::Elevation } else { MapKind::Continents });
+    let limits = MapLimits { max_bytes: body_limit, ..MapLimits::default() };
+    let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
+    let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
+    Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: Some(meta) }, map: Some(map) })
+}
+
+/// Decodes a map off the async runtime.
+pub async fn decode_map(
+    bytes: Bytes,
+    kind: MapKind,
+    range: Option<(f64, f64)>,
+    bounds: Option<GeoBounds>,
+    limits: MapLimits,
+) -> Result<Map, MapError> {
+    tokio::task::spawn_blocking(move || Map::decode(&bytes, kind, range, bounds, &limits))
+        .await
+        .unwrap_or_else(|_| Err(MapError::Corrupt { format: "image", detail: "the decoder failed".into() }))
+}

@@ -1,0 +1,274 @@
+//! The HTTP service (`riverworld serve`): planets created from a seed or an uploaded map, built
+//! in the background by a worker pool, and served as view-dependent glTF, GeoJSON rivers and
+//! equirectangular rasters. `openapi.yaml` at the repository root describes every route.
+//!
+//! Only inputs are stored (see [`store`]); a planet's mesh and every file rendered from it are
+//! caches, rebuilt on demand, because the same inputs always give the same bytes. The built-in
+//! planet `earth` (the shipped Earth continent bitmap, seed 42, default parameters) is built at
+//! start; `/readyz` answers 200 once it is.
+
+pub mod cache;
+pub mod error;
+pub mod input;
+pub mod jobs;
+pub mod metrics;
+pub mod planets;
+pub mod resources;
+pub mod state;
+pub mod store;
+
+use axum::extract::{DefaultBodyLimit, State};
+use axum::http::{header, HeaderMap, HeaderValue, Method, StatusCode, Version};
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+use axum::{middleware, Router};
+use error::ApiError;
+use state::{AppState, Entry, EARTH_ID, EARTH_MAP, EARTH_SEED};
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, RwLock};
+use std::time::Duration;
+use store::{MapMeta, Store, StoredInput};
+use tower_http::compression::predicate::{Predicate, SizeAbove};
+use tower_http::compression::CompressionLayer;
+use tower_http::cors::{AllowOrigin, CorsLayer};
+use tower_http::limit::RequestBodyLimitLayer;
+use tower_http::timeout::TimeoutLayer;
+use tower_http::trace::TraceLayer;
+
+/// The API description served at `/openapi.yaml`.
+pub const OPENAPI: &str = include_str!("../../openapi.yaml");
+
+/// How the server runs; `Default` matches `riverworld serve` without options.
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// Directory of the default local store.
+    pub data_dir: PathBuf,
+    /// Store URL (`file:///dir`, a directory or `s3://bucket/prefix`); None = `data_dir`.
+    pub store_url: Option<String>,
+    /// Build jobs that may wait beyond the running ones; more answer 429.
+    pub max_queue: usize,
+    /// Build worker threads.
+    pub workers: usize,
+    /// Budget of the in-memory cache of planets and rendered answers, bytes.
+    pub cache_bytes: usize,
+    /// Largest request body, bytes.
+    pub body_limit: usize,
+    /// Allowed CORS origins: `*` or a comma-separated list.
+    pub cors_origin: String,
+    /// Largest `max_faces` a view may ask for.
+    pub max_faces_cap: usize,
+    /// Longest a request may take before it is answered 503 `timeout`.
+    pub request_timeout: Duration,
+    /// Whether to serve (and build at start) the built-in planet `earth`.
+    pub default_planet: bool,
+    /// A pause before each build starts; zero in service, lets tests observe a full queue.
+    pub build_delay: Duration,
+}
+
+impl Default for Config {
+    fn default() -> Config {
+        Config {
+            data_dir: PathBuf::from("data"),
+            store_url: None,
+            max_queue: 8,
+            workers: 1,
+            cache_bytes: 512 << 20,
+            body_limit: 64 << 20,
+            cors_origin: "*".into(),
+            max_faces_cap: 2_000_000,
+            request_timeout: Duration::from_secs(120),
+            default_planet: true,
+            build_delay: Duration::ZERO,
+        }
+    }
+}
+
+/// Whether `id` has the shape of a stored planet's id: 16 lowercase hex characters.
+pub fn valid_hex_id(id: &str) -> bool {
+    id.len() == input::ID_HEX && id.bytes().all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b))
+}
+
+/// Whether `id` can name a planet at all (checked before any lookup or storage access).
+pub fn valid_id(id: &str) -> bool {
+    id == EARTH_ID || valid_hex_id(id)
+}
+
+/// A running server.
+pub struct Server {
+    addr: SocketAddr,
+    shutdown: Option<tokio::sync::oneshot::Sender<()>>,
+    task: tokio::task::JoinHandle<std::io::Result<()>>,
+}
+
+impl Server {
+    /// The address the server listens on.
+    pub fn local_addr(&self) -> SocketAddr {
+        self.addr
+    }
+
+    /// Stops accepting connections, lets open requests finish and waits for the server to end.
+    pub async fn shutdown(mut self) -> std::io::Result<()> {
+        if let Some(tx) = self.shutdown.take() {
+            let _ = tx.send(());
+        }
+        self.task.await.unwrap_or_else(|e| Err(std::io::Error::other(e)))
+    }
+}
+
+/// Opens the store, lists the stored planets (as `queued`: they are rebuilt on first access),
+/// starts the built-in planet's build and serves on `listener` until [`Server::shutdown`].
+pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<Server, String> {
+    let store = Store::open(config.store_url.as_deref(), &config.data_dir)?;
+    let mut planets = std::collections::BTreeMap::new();
+    for id in store.ids().await.map_err(|e| format!("cannot list stored planets: {e}"))? {
+        match store.input(&id).await {
+            Ok(Some(input)) => {
+                planets.insert(id.clone(), Arc::new(Entry::new(id, input, None)));
+            }
+            Ok(None) => {}
+            Err(e) => tracing::warn!(%id, error = %e, "skipping a stored planet that cannot be read"),
+        }
+    }
+    tracing::info!(planets = planets.len(), "stored planets found");
+    let permits = std::thread::available_parallelism().map_or(2, |n| n.get()).max(2);
+    let state = Arc::new(AppState {
+        pool: jobs::Pool::new(config.workers, config.max_queue),
+        cache: cache::ByteLru::new(config.cache_bytes),
+        metrics: metrics::Metrics::default(),
+        ready: AtomicBool::new(!config.default_planet),
+        runtime: tokio::runtime::Handle::current(),
+        inflight: Mutex::new(Default::default()),
+        renders: tokio::sync::Semaphore::new(permits),
+        planets: RwLock::new(planets),
+        store,
+        config,
+    });
+    if state.config.default_planet {
+        let earth = Arc::new(earth_entry());
+        state.planets.write().expect("planets lock").insert(EARTH_ID.to_string(), Arc::clone(&earth));
+        state.start_default_build(&earth);
+    }
+    let app = router(Arc::clone(&state))?;
+    let addr = listener.local_addr().map_err(|e| e.to_string())?;
+    let (tx, rx) = tokio::sync::oneshot::channel::<()>();
+    let task = tokio::spawn(async move {
+        axum::serve(listener, app)
+            .with_graceful_shutdown(async move {
+                let _ = rx.await;
+            })
+            .await
+    });
+    tracing::info!(%addr, "serving");
+    Ok(Server { addr, shutdown: Some(tx), task })
+}
+
+/// The built-in planet: the shipped Earth continent bitmap, seed 42, default parameters.
+fn earth_entry() -> Entry {
+    let (width, height) = png_size(EARTH_MAP);
+    let map = MapMeta {
+        kind: crate::maps::MapKind::Continents,
+        bytes: EARTH_MAP.len(),
+        width,
+        height,
+        range_m: None,
+        bounds: None,
+    };
+    let input = StoredInput { seed: EARTH_SEED, params: crate::params::Params::default(), map: Some(map) };
+    Entry::new(EARTH_ID.to_string(), input, Some(EARTH_MAP))
+}
+
+/// Width and height from a PNG's IHDR chunk.
+fn png_size(png: &[u8]) -> (u32, u32) {
+    let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
+    (be(16), be(20))
+}
+
+/// All routes with their layers (outermost first: trace, CORS, compression, JSON errors,
+/// metrics, timeout, body limit).
+fn router(state: Arc<AppState>) -> Result<Router, String> {
+    let c = &state.config;
+    let origin = if c.cors_origin.trim() == "*" {
+        AllowOrigin::any()
+    } else {
+        let list = c
+            .cors_origin
+            .split(',')
+            .map(|o| HeaderValue::from_str(o.trim()).map_err(|_| format!("invalid --cors-origin {o:?}")))
+            .collect::<Result<Vec<_>, _>>()?;
+        AllowOrigin::list(list)
+    };
+    let cors = CorsLayer::new()
+        .allow_origin(origin)
+        .allow_methods([Method::GET, Method::HEAD, Method::POST, Method::DELETE])
+        .allow_headers([header::CONTENT_TYPE, header::IF_NONE_MATCH])
+        .expose_headers([header::ETAG, header::LOCATION, header::RETRY_AFTER])
+        .max_age(Duration::from_secs(86_400));
+    let textual = |_: StatusCode, _: Version, h: &HeaderMap, _: &axum::http::Extensions| {
+        let ct = h.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
+        ["application/json", "application/geo+json", "application/yaml", "text/"].iter().any(|t| ct.starts_with(t))
+    };
+    let compression = CompressionLayer::new().compress_when(SizeAbove::new(256).and(textual));
+    Ok(Router::new()
+        .route("/healthz", get(healthz))
+        .route("/readyz", get(readyz))
+        .route("/metrics", get(metrics_text))
+        .route("/openapi.yaml", get(openapi))
+        .route("/v1/planets", get(planets::list).post(planets::create))
+        .route("/v1/planets/{id}", get(planets::read).delete(planets::delete))
+        .route("/v1/planets/{id}/view.glb", get(resources::view))
+        .route("/v1/planets/{id}/rivers.geojson", get(resources::rivers))
+        .route("/v1/planets/{id}/landmask.png", get(resources::landmask))
+        .route("/v1/planets/{id}/preview.png", get(resources::preview))
+        .route("/v1/planets/{id}/elevation.tif", get(resources::elevation))
+        .fallback(not_found)
+        .layer(DefaultBodyLimit::max(c.body_limit))
+        .layer(RequestBodyLimitLayer::new(c.body_limit))
+        .layer(TimeoutLayer::with_status_code(StatusCode::SERVICE_UNAVAILABLE, c.request_timeout))
+        .layer(middleware::from_fn_with_state(Arc::clone(&state), metrics::track))
+        .layer(middleware::from_fn(error::json_errors))
+        .layer(compression)
+        .layer(cors)
+        .layer(TraceLayer::new_for_http())
+        .with_state(state))
+}
+
+async fn not_found() -> ApiError {
+    ApiError::not_found("route")
+}
+
+fn plain(content_type: &'static str, body: impl Into<axum::body::Body>) -> Response {
+    let mut res = Response::new(body.into());
+    let h = res.headers_mut();
+    h.insert(header::CONTENT_TYPE, HeaderValue::from_static(content_type));
+    h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+    res
+}
+
+async fn healthz() -> Response {
+    plain("application/json", r#"{"status":"ok"}"#)
+}
+
+async fn readyz(State(state): State<Arc<AppState>>) -> Result<Response, ApiError> {
+    if state.ready.load(Ordering::SeqCst) {
+        Ok(plain("application/json", r#"{"status":"ready"}"#))
+    } else {
+        Err(ApiError::new(StatusCode::SERVICE_UNAVAILABLE, "not_ready", "the built-in planet is still building")
+            .retry_after(1))
+    }
+}
+
+async fn metrics_text(State(state): State<Arc<AppState>>) -> Response {
+    let planets = state.planets.read().expect("planets lock").len() as f64;
+    let text = state.metrics.render(&[
+        ("riverworld_build_jobs", "Build jobs running or waiting.", state.pool.load() as f64),
+        ("riverworld_cache_bytes", "Bytes held by the in-memory cache.", state.cache.bytes() as f64),
+        ("riverworld_planets", "Known planets.", planets),
+    ]);
+    plain("text/plain; version=0.0.4; charset=utf-8", text)
+}
+
+async fn openapi() -> impl IntoResponse {
+    plain("application/yaml", OPENAPI)
+}

@@ -1,0 +1,96 @@
+//! `/v1/planets`: create (idempotent: the id names the inputs), list, read and delete planets.
+
+use super::error::ApiError;
+use super::input::{self, planet_id};
+use super::state::{queue_full, AppState, Entry, EARTH_ID};
+use axum::body::Body;
+use axum::extract::{Path, State};
+use axum::http::{header, HeaderValue, Request, StatusCode};
+use axum::response::{IntoResponse, Response};
+use std::sync::Arc;
+
+/// A JSON answer that clients must not cache (records change while a planet builds).
+fn json(status: StatusCode, value: &impl serde::Serialize) -> Response {
+    let body = serde_json::to_vec(value).expect("record serialises");
+    let mut res = (status, body).into_response();
+    let h = res.headers_mut();
+    h.insert(header::CONTENT_TYPE, HeaderValue::from_static("application/json"));
+    h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+    res
+}
+
+fn with_location(mut res: Response, id: &str) -> Response {
+    let loc = HeaderValue::from_str(&format!("/v1/planets/{id}")).expect("id is a valid header");
+    res.headers_mut().insert(header::LOCATION, loc);
+    res
+}
+
+/// `POST /v1/planets`: 202 with the new record, or 200/202 with the existing one.
+pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> Result<Response, ApiError> {
+    let new = input::read(req, state.config.body_limit).await?;
+    let id = planet_id(&new.input, new.map.as_deref());
+    if let Some(entry) = state.entry(&id) {
+        return Ok(existing(&state, &entry));
+    }
+    let slot = state.pool.reserve().ok_or_else(queue_full)?;
+    state.store.put(&id, &new.input, new.map).await.map_err(|e| {
+        tracing::error!(%id, error = %e, "cannot store planet inputs");
+        ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("cannot store the inputs: {e}"))
+    })?;
+    let entry = {
+        let mut planets = state.planets.write().expect("planets lock");
+        if let Some(entry) = planets.get(&id).cloned() {
+            drop(planets);
+            return Ok(existing(&state, &entry));
+        }
+        let entry = Arc::new(Entry::new(id.clone(), new.input, None));
+        planets.insert(id.clone(), Arc::clone(&entry));
+        entry
+    };
+    tracing::info!(%id, "planet accepted");
+    state.start_build(&entry, slot);
+    Ok(with_location(json(StatusCode::ACCEPTED, &state.record(&entry)), &id))
+}
+
+/// The answer to a POST of inputs that are known already: 200 when ready (or failed), else 202.
+fn existing(state: &Arc<AppState>, entry: &Arc<Entry>) -> Response {
+    let _ = state.ensure_build(entry);
+    let record = state.record(entry);
+    let status = if matches!(record.status, "ready" | "failed") { StatusCode::OK } else { StatusCode::ACCEPTED };
+    with_location(json(status, &record), &entry.id)
+}
+
+/// `GET /v1/planets`: every planet's record, sorted by id.
+pub async fn list(State(state): State<Arc<AppState>>) -> Response {
+    let entries: Vec<Arc<Entry>> = state.planets.read().expect("planets lock").values().cloned().collect();
+    let records: Vec<_> = entries.iter().map(|e| state.record(e)).collect();
+    json(StatusCode::OK, &serde_json::json!({ "planets": records }))
+}
+
+/// `GET /v1/planets/{id}`: the record; starts the build of a planet that is not built.
+pub async fn read(State(state): State<Arc<AppState>>, Path(id): Path<String>) -> Result<Response, ApiError> {
+    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    // A full queue only delays the build: the next read tries again.
+    let _ = state.ensure_build(&entry);
+    Ok(json(StatusCode::OK, &state.record(&entry)))
+}
+
+/// `DELETE /v1/planets/{id}`: 204; removes the inputs from the store and every cached answer.
+pub async fn delete(State(state): State<Arc<AppState>>, Path(id): Path<String>) -> Result<Response, ApiError> {
+    if id == EARTH_ID {
+        return Err(ApiError::new(
+            StatusCode::FORBIDDEN,
+            "protected_planet",
+            "the built-in planet earth cannot be deleted",
+        ));
+    }
+    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    state.store.delete(&id).await.map_err(|e| {
+        ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("cannot delete the inputs: {e}"))
+    })?;
+    entry.mark_deleted();
+    state.planets.write().expect("planets lock").remove(&id);
+    state.cache.remove_prefix(&format!("{id}/"));
+    tracing::info!(%id, "planet deleted");
+    Ok(StatusCode::NO_CONTENT.into_response())
+}

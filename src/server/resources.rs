@@ -1,0 +1,256 @@
+//! Files derived from a built planet: `view.glb` for a camera, `rivers.geojson`, `landmask.png`,
+//! `preview.png` and `elevation.tif`.
+//!
+//! Each answer is a pure function of the planet id, the route and the normalised query, so it
+//! carries a strong `ETag` over exactly those, is immutable for caches, and is kept in the
+//! server's byte-bounded cache. Concurrent requests for the same answer share one rendering.
+//! A planet that is not built yet answers 409 `not_ready` with `Retry-After: 1` (and its build
+//! is started); one whose build failed answers 409 `build_failed`.
+
+use super::error::ApiError;
+use super::state::{AppState, Availability, Cached};
+use crate::adapt::{Adapter, Camera};
+use crate::build::Planet;
+use crate::export;
+use crate::params::Params;
+use axum::body::Bytes;
+use axum::extract::{Path, RawQuery, State};
+use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use sha2::{Digest, Sha256};
+use std::sync::Arc;
+use tokio::sync::OnceCell;
+
+/// Faces of a view when the query gives no `max_faces`.
+pub const DEFAULT_MAX_FACES: usize = 500_000;
+/// Default width of the rasters (height is half).
+pub const DEFAULT_RASTER_WIDTH: u32 = 1024;
+/// Widest raster.
+pub const MAX_RASTER_WIDTH: u32 = 8192;
+
+/// The derived resources.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Resource {
+    View,
+    Rivers,
+    Landmask,
+    Preview,
+    Elevation,
+}
+
+impl Resource {
+    fn name(self) -> &'static str {
+        match self {
+            Resource::View => "view.glb",
+            Resource::Rivers => "rivers.geojson",
+            Resource::Landmask => "landmask.png",
+            Resource::Preview => "preview.png",
+            Resource::Elevation => "elevation.tif",
+        }
+    }
+
+    fn content_type(self) -> &'static str {
+        match self {
+            Resource::View => "model/gltf-binary",
+            Resource::Rivers => "application/geo+json",
+            Resource::Landmask | Resource::Preview => "image/png",
+            Resource::Elevation => "image/tiff",
+        }
+    }
+}
+
+/// A parsed, validated query.
+enum Job {
+    View { cam: Camera, max_faces: usize },
+    Rivers,
+    Raster { width: u32 },
+}
+
+fn unknown_key(key: &str, allowed: &str) -> ApiError {
+    ApiError::unprocessable("unknown_parameter", key, format!("unknown query parameter {key:?}; allowed: {allowed}"))
+}
+
+/// Parses the query of `res` into the work to do and its normal form (the cache key).
+fn prepare(res: Resource, query: &str, params: &Params, max_faces_cap: usize) -> Result<(Job, String), ApiError> {
+    match res {
+        Resource::View => {
+            let (cam, rest) = Camera::parse_query(query, params.radius_m)
+                .map_err(|e| ApiError::unprocessable("invalid_camera", e.field, e.message))?;
+            let mut max_faces = DEFAULT_MAX_FACES.min(max_faces_cap);
+            for (k, v) in rest {
+                if k != "max_faces" {
+                    return Err(unknown_key(&k, "eye, target, up, fov, width, height, land_px, water_px, max_faces"));
+                }
+                max_faces = match v.trim().parse::<usize>() {
+                    Ok(n) if (1..=max_faces_cap).contains(&n) => n,
+                    _ => {
+                        return Err(ApiError::unprocessable(
+                            "invalid_parameter",
+                            "max_faces",
+                            format!("must be a whole number in 1..={max_faces_cap}, got {v:?}"),
+                        ))
+                    }
+                };
+            }
+            let norm = format!("{}&max_faces={max_faces}", cam.to_query());
+            Ok((Job::View { cam, max_faces }, norm))
+        }
+        Resource::Rivers => match pairs(query).next() {
+            Some((k, _)) => Err(unknown_key(k, "none")),
+            None => Ok((Job::Rivers, String::new())),
+        },
+        _ => {
+            let mut width = DEFAULT_RASTER_WIDTH;
+            for (k, v) in pairs(query) {
+                if k != "width" {
+                    return Err(unknown_key(k, "width"));
+                }
+                width = match v.trim().parse::<u32>() {
+                    Ok(w) if (2..=MAX_RASTER_WIDTH).contains(&w) => w,
+                    _ => {
+                        return Err(ApiError::unprocessable(
+                            "invalid_parameter",
+                            "width",
+                            format!("must be a whole number in 2..={MAX_RASTER_WIDTH}, got {v:?}"),
+                        ))
+                    }
+                };
+            }
+            Ok((Job::Raster { width }, format!("width={width}")))
+        }
+    }
+}
+
+fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
+    query.split(['&', ';']).filter(|p| !p.is_empty()).map(|p| p.split_once('=').unwrap_or((p, "")))
+}
+
+/// Renders a resource from a built planet (blocking; runs off the async runtime).
+fn render(res: Resource, job: &Job, planet: &Planet, params: &Params) -> Vec<u8> {
+    let mesh = &planet.mesh;
+    match (res, job) {
+        (_, Job::View { cam, max_faces }) => {
+            let mut adapter = Adapter::new(mesh.clone(), params.clone());
+            adapter.adapt(cam, Some(*max_faces));
+            let origin = export::view::local_origin(cam.eye, params.radius_m);
+            export::view::view_glb(adapter.mesh(), params, origin)
+        }
+        (_, Job::Rivers) => export::rivers_geojson(mesh, &planet.rivers, params).into_bytes(),
+        (Resource::Landmask, Job::Raster { width }) => export::landmask_png(mesh, *width, (*width / 2).max(1)),
+        (Resource::Preview, Job::Raster { width }) => {
+            export::preview_png(mesh, &planet.rivers, params, *width, (*width / 2).max(1))
+        }
+        (_, Job::Raster { width }) => export::elevation_tiff(mesh, params, *width, (*width / 2).max(1)),
+    }
+}
+
+/// Strong validator of one answer: the software version, id, route and normalised query.
+fn etag(id: &str, res: Resource, norm: &str) -> String {
+    let mut h = Sha256::new();
+    for part in [env!("CARGO_PKG_VERSION"), id, res.name(), norm] {
+        h.update(part.as_bytes());
+        h.update([0]);
+    }
+    let hex: String = h.finalize().iter().take(16).map(|b| format!("{b:02x}")).collect();
+    format!("\"{hex}\"")
+}
+
+/// Whether `If-None-Match` lists `tag` (weak comparison, as the header asks).
+fn matches(headers: &HeaderMap, tag: &str) -> bool {
+    headers
+        .get_all(header::IF_NONE_MATCH)
+        .iter()
+        .filter_map(|v| v.to_str().ok())
+        .any(|v| v.split(',').map(str::trim).any(|t| t == "*" || t.trim_start_matches("W/") == tag))
+}
+
+fn immutable(res: Response, tag: &str) -> Response {
+    let mut res = res;
+    let h = res.headers_mut();
+    h.insert(header::ETAG, HeaderValue::from_str(tag).expect("hex etag"));
+    h.insert(header::CACHE_CONTROL, HeaderValue::from_static("public, max-age=31536000, immutable"));
+    res
+}
+
+/// `GET /v1/planets/{id}/<resource>`.
+pub async fn get(
+    res: Resource,
+    state: Arc<AppState>,
+    id: String,
+    query: Option<String>,
+    headers: HeaderMap,
+) -> Result<Response, ApiError> {
+    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    let params = entry.input.params.clone();
+    let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, state.config.max_faces_cap)?;
+    let tag = etag(&id, res, &norm);
+    let key = format!("{id}/{}?{norm}", res.name());
+    let ok = |bytes: Bytes| {
+        let r = ([(header::CONTENT_TYPE, HeaderValue::from_static(res.content_type()))], bytes).into_response();
+        immutable(r, &tag)
+    };
+    let planet = match state.availability(&entry) {
+        Availability::Failed(e) => {
+            return Err(ApiError::new(StatusCode::CONFLICT, "build_failed", format!("the build failed: {}", e.message)))
+        }
+        _ if matches(&headers, &tag) => return Ok(immutable(StatusCode::NOT_MODIFIED.into_response(), &tag)),
+        Availability::Ready(p) => Some(p),
+        Availability::Pending => None,
+    };
+    if let Some(Cached::Response(bytes)) = state.cache.get(&key) {
+        state.metrics.cache_hit("response");
+        return Ok(ok(bytes));
+    }
+    let Some(planet) = planet else {
+        state.ensure_build(&entry)?;
+        return Err(
+            ApiError::new(StatusCode::CONFLICT, "not_ready", format!("planet {id} is not built yet")).retry_after(1)
+        );
+    };
+    let cell = {
+        let mut inflight = state.inflight.lock().expect("inflight lock");
+        Arc::clone(inflight.entry(key.clone()).or_insert_with(|| Arc::new(OnceCell::new())))
+    };
+    let bytes = cell
+        .get_or_try_init(|| async {
+            state.metrics.cache_miss("response");
+            let _permit = state.renders.acquire().await.map_err(|_| ApiError::internal("shutting down"))?;
+            let out = tokio::task::spawn_blocking(move || Bytes::from(render(res, &job, &planet, &params)))
+                .await
+                .map_err(|_| ApiError::internal("rendering failed"))?;
+            if !entry_gone(&state, &id) {
+                state.cache.insert(key.clone(), Cached::Response(out.clone()), out.len() + key.len());
+            }
+            Ok::<Bytes, ApiError>(out)
+        })
+        .await?
+        .clone();
+    let mut inflight = state.inflight.lock().expect("inflight lock");
+    if inflight.get(&key).is_some_and(|c| Arc::ptr_eq(c, &cell)) {
+        inflight.remove(&key);
+    }
+    drop(inflight);
+    Ok(ok(bytes))
+}
+
+fn entry_gone(state: &AppState, id: &str) -> bool {
+    state.entry(id).is_none()
+}
+
+type Answer = Result<Response, ApiError>;
+
+pub async fn view(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
+    get(Resource::View, s.0, p.0, q.0, h).await
+}
+pub async fn rivers(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
+    get(Resource::Rivers, s.0, p.0, q.0, h).await
+}
+pub async fn landmask(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
+    get(Resource::Landmask, s.0, p.0, q.0, h).await
+}
+pub async fn preview(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
+    get(Resource::Preview, s.0, p.0, q.0, h).await
+}
+pub async fn elevation(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
+    get(Resource::Elevation, s.0, p.0, q.0, h).await
+}

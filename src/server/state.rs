@@ -1,0 +1,266 @@
+//! The server's shared state: the known planets, their build state and records, and the build
+//! jobs that turn stored inputs into meshes held in the byte-bounded cache.
+
+use super::cache::ByteLru;
+use super::error::ApiError;
+use super::jobs::Pool;
+use super::metrics::Metrics;
+use super::store::{Store, StoredInput};
+use super::Config;
+use crate::build::{build_planet, BuildError, Planet, PlanetSpec, Stats};
+use crate::maps::{Map, MapLimits};
+use axum::body::Bytes;
+use axum::http::StatusCode;
+use serde::Serialize;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, RwLock};
+use tokio::sync::OnceCell;
+
+/// Id of the built-in planet.
+pub const EARTH_ID: &str = "earth";
+/// The built-in planet's map, shipped in the binary.
+pub const EARTH_MAP: &[u8] = include_bytes!("../../maps/earth_landmask_ne10m_1024x512.png");
+/// The built-in planet's seed.
+pub const EARTH_SEED: u64 = 42;
+
+/// A cached value: a built planet or a rendered response body.
+#[derive(Clone)]
+pub enum Cached {
+    Planet(Arc<Planet>),
+    Response(Bytes),
+}
+
+/// Where a planet's build stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Job {
+    Idle,
+    Queued,
+    Building,
+}
+
+struct EntryState {
+    job: Job,
+    progress: f32,
+    stats: Option<Stats>,
+    error: Option<ApiError>,
+}
+
+/// One known planet.
+pub struct Entry {
+    pub id: String,
+    pub input: StoredInput,
+    /// The built-in planet's map; stored planets read theirs from the store.
+    embedded: Option<&'static [u8]>,
+    state: Mutex<EntryState>,
+    deleted: AtomicBool,
+}
+
+/// `GET /v1/planets/{id}`.
+#[derive(Serialize)]
+pub struct Record<'a> {
+    pub id: &'a str,
+    pub status: &'static str,
+    pub progress: f32,
+    pub seed: u64,
+    pub params: &'a crate::params::Params,
+    pub map: &'a Option<super::store::MapMeta>,
+    pub stats: Option<Stats>,
+    pub error: Option<ApiError>,
+}
+
+/// What a planet's derived resources can use now.
+pub enum Availability {
+    Ready(Arc<Planet>),
+    Pending,
+    Failed(ApiError),
+}
+
+/// Everything the handlers share.
+pub struct AppState {
+    pub config: Config,
+    pub store: Store,
+    pub planets: RwLock<BTreeMap<String, Arc<Entry>>>,
+    pub pool: Arc<Pool>,
+    pub cache: ByteLru<Cached>,
+    pub metrics: Metrics,
+    /// Whether the built-in planet is built (or there is none).
+    pub ready: AtomicBool,
+    pub runtime: tokio::runtime::Handle,
+    pub inflight: Mutex<HashMap<String, Arc<OnceCell<Bytes>>>>,
+    pub renders: tokio::sync::Semaphore,
+}
+
+impl Entry {
+    pub fn new(id: String, input: StoredInput, embedded: Option<&'static [u8]>) -> Entry {
+        let state = EntryState { job: Job::Idle, progress: 0.0, stats: None, error: None };
+        Entry { id, input, embedded, state: Mutex::new(state), deleted: AtomicBool::new(false) }
+    }
+
+    /// Marks the entry gone, so that a build still running does not cache its result.
+    pub fn mark_deleted(&self) {
+        self.deleted.store(true, Ordering::SeqCst);
+    }
+}
+
+/// Cache key of a built planet; every key of a planet starts with `{id}/`.
+pub fn planet_key(id: &str) -> String {
+    format!("{id}/planet")
+}
+
+impl AppState {
+    pub fn entry(&self, id: &str) -> Option<Arc<Entry>> {
+        if !super::valid_id(id) {
+            return None;
+        }
+        self.planets.read().expect("planets lock").get(id).cloned()
+    }
+
+    /// The record of a planet as it stands now.
+    pub fn record<'a>(&self, entry: &'a Entry) -> Record<'a> {
+        let st = entry.state.lock().expect("entry lock");
+        let built = self.cache.contains(&planet_key(&entry.id));
+        let (status, progress) = match st.job {
+            Job::Queued => ("queued", 0.0),
+            Job::Building => ("building", st.progress.clamp(0.0, 0.99)),
+            Job::Idle if st.error.is_some() => ("failed", 0.0),
+            Job::Idle if built => ("ready", 1.0),
+            Job::Idle => ("queued", 0.0),
+        };
+        Record {
+            id: &entry.id,
+            status,
+            progress,
+            seed: entry.input.seed,
+            params: &entry.input.params,
+            map: &entry.input.map,
+            stats: st.stats.clone(),
+            error: st.error.clone(),
+        }
+    }
+
+    /// The built planet, or why there is none yet.
+    pub fn availability(&self, entry: &Entry) -> Availability {
+        if let Some(err) = entry.state.lock().expect("entry lock").error.clone() {
+            return Availability::Failed(err);
+        }
+        match self.cache.get(&planet_key(&entry.id)) {
+            Some(Cached::Planet(p)) => {
+                self.metrics.cache_hit("planet");
+                Availability::Ready(p)
+            }
+            _ => Availability::Pending,
+        }
+    }
+
+    /// Starts a build unless the planet is built, building, queued or failed; 429 when the
+    /// queue is full.
+    pub fn ensure_build(self: &Arc<Self>, entry: &Arc<Entry>) -> Result<(), ApiError> {
+        let mut st = entry.state.lock().expect("entry lock");
+        if st.job != Job::Idle || st.error.is_some() || self.cache.contains(&planet_key(&entry.id)) {
+            return Ok(());
+        }
+        let slot = self.pool.reserve().ok_or_else(queue_full)?;
+        self.metrics.cache_miss("planet");
+        st.job = Job::Queued;
+        st.progress = 0.0;
+        drop(st);
+        let (state, entry) = (Arc::clone(self), Arc::clone(entry));
+        slot.submit(move || run_build(&state, &entry));
+        Ok(())
+    }
+
+    /// Queues the build of a new planet into a reserved slot.
+    pub fn start_build(self: &Arc<Self>, entry: &Arc<Entry>, slot: super::jobs::Slot) {
+        entry.state.lock().expect("entry lock").job = Job::Queued;
+        let (state, entry) = (Arc::clone(self), Arc::clone(entry));
+        slot.submit(move || run_build(&state, &entry));
+    }
+
+    /// Queues the build of the built-in planet whatever the queue holds.
+    pub fn start_default_build(self: &Arc<Self>, entry: &Arc<Entry>) {
+        entry.state.lock().expect("entry lock").job = Job::Queued;
+        let (state, entry) = (Arc::clone(self), Arc::clone(entry));
+        self.pool.submit_unbounded(move || {
+            run_build(&state, &entry);
+            if state.cache.contains(&planet_key(EARTH_ID)) {
+                state.ready.store(true, Ordering::SeqCst);
+                tracing::info!("built-in planet {EARTH_ID} is ready");
+            }
+        });
+    }
+}
+
+/// 429 with `Retry-After`.
+pub fn queue_full() -> ApiError {
+    ApiError::new(StatusCode::TOO_MANY_REQUESTS, "queue_full", "the build queue is full; retry later").retry_after(5)
+}
+
+/// Runs on a build worker: loads the inputs, builds, caches the planet or records the failure.
+fn run_build(state: &Arc<AppState>, entry: &Arc<Entry>) {
+    if !state.config.build_delay.is_zero() {
+        std::thread::sleep(state.config.build_delay);
+    }
+    if entry.deleted.load(Ordering::SeqCst) {
+        entry.state.lock().expect("entry lock").job = Job::Idle;
+        return;
+    }
+    entry.state.lock().expect("entry lock").job = Job::Building;
+    state.metrics.build_started();
+    tracing::info!(id = %entry.id, "build started");
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| build_entry(state, entry)))
+        .unwrap_or_else(|_| Err(ApiError::internal("the build panicked")));
+    match outcome {
+        Ok(planet) => {
+            let planet = Arc::new(planet);
+            let bytes = (planet.mesh.bytes_per_vertex() * planet.mesh.vertices.len() as f64) as usize;
+            tracing::info!(id = %entry.id, ms = planet.stats.build_ms, faces = planet.stats.faces, "build finished");
+            let stats = planet.stats.clone();
+            if !entry.deleted.load(Ordering::SeqCst) {
+                state.cache.insert(planet_key(&entry.id), Cached::Planet(planet), bytes);
+            }
+            let mut st = entry.state.lock().expect("entry lock");
+            st.stats = Some(stats);
+            st.job = Job::Idle;
+            state.metrics.build_finished();
+        }
+        Err(err) => {
+            tracing::warn!(id = %entry.id, error = %err, "build failed");
+            let mut st = entry.state.lock().expect("entry lock");
+            st.error = Some(err);
+            st.job = Job::Idle;
+            state.metrics.build_failed();
+        }
+    }
+}
+
+fn build_entry(state: &AppState, entry: &Entry) -> Result<Planet, ApiError> {
+    let input = &entry.input;
+    let map = match &input.map {
+        None => None,
+        Some(meta) => {
+            let bytes = match entry.embedded {
+                Some(b) => Bytes::from_static(b),
+                None => state.runtime.block_on(state.store.map(&entry.id)).map_err(|e| {
+                    ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("reading the map: {e}"))
+                })?,
+            };
+            let limits = MapLimits { max_bytes: state.config.body_limit.max(bytes.len()), ..MapLimits::default() };
+            let map = Map::decode(&bytes, meta.kind, meta.range_m, meta.bounds, &limits)
+                .map_err(|e| ApiError::from_map(&e))?;
+            Some(Arc::new(map))
+        }
+    };
+    let spec = PlanetSpec { seed: input.seed, params: input.params.clone(), map };
+    let mut progress = |_: &str, f: f32| {
+        entry.state.lock().expect("entry lock").progress = f;
+    };
+    build_planet(&spec, &mut progress).map_err(|e| {
+        let code = match e {
+            BuildError::Params(_) => "invalid_params",
+            BuildError::NoSea => "no_sea",
+            BuildError::NoLand => "no_land",
+        };
+        ApiError::unprocessable(code, e.field(), e.to_string())
+    })
+}

@@ -1,0 +1,224 @@
+//! The HTTP service end to end: a real server on a free port, a real client, a scratch store.
+
+mod server_common;
+
+use serde_json::Value;
+use server_common::*;
+use std::time::Duration;
+
+async fn created_id(res: reqwest::Response) -> String {
+    assert_eq!(res.status().as_u16(), 202);
+    let loc = res.headers()["location"].to_str().unwrap().to_string();
+    let rec: Value = res.json().await.unwrap();
+    let id = rec["id"].as_str().unwrap().to_string();
+    assert_eq!(loc, format!("/v1/planets/{id}"));
+    assert!(id.len() == 16 && id.bytes().all(|b| b.is_ascii_hexdigit() && !b.is_ascii_uppercase()), "{id}");
+    assert!(matches!(rec["status"].as_str(), Some("queued" | "building" | "ready")), "{rec}");
+    id
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn map_upload_builds_and_serves_every_file() {
+    let s = start(config(&scratch("happy"))).await;
+    let id =
+        created_id(s.post_map(small_map(), &[("params", FAST), ("seed", "1"), ("map_kind", "continents")]).await).await;
+    let rec = s.wait_ready(&id).await;
+    assert_eq!(rec["progress"], 1.0);
+    assert_eq!(rec["seed"], 1);
+    assert_eq!(rec["params"]["base_faces"], 2000);
+    assert_eq!(rec["map"]["kind"], "continents");
+    assert_eq!((rec["map"]["width"].as_u64(), rec["map"]["height"].as_u64()), (Some(256), Some(128)));
+    assert!(rec["stats"]["faces"].as_u64().unwrap() >= 2000);
+    assert!(rec["error"].is_null());
+    assert!(s.dir.join(format!("planets/{id}/request.json")).is_file());
+    assert!(s.dir.join(format!("planets/{id}/map.bin")).is_file());
+
+    // The same inputs again: same id, nothing new.
+    let again = s.post_map(small_map(), &[("params", FAST), ("seed", "1")]).await;
+    assert_eq!(again.status().as_u16(), 200);
+    assert_eq!(again.headers()["location"].to_str().unwrap(), format!("/v1/planets/{id}"));
+    assert_eq!(again.json::<Value>().await.unwrap()["id"], id.as_str());
+    let list: Value = s.get("/v1/planets").await.json().await.unwrap();
+    let ids: Vec<&str> = list["planets"].as_array().unwrap().iter().map(|p| p["id"].as_str().unwrap()).collect();
+    assert_eq!(ids, vec![id.as_str()]);
+
+    let res = s.get(&format!("/v1/planets/{id}/view.glb?{CAMERA}")).await;
+    assert_eq!(res.status().as_u16(), 200);
+    let h = res.headers().clone();
+    assert_eq!(h["content-type"], "model/gltf-binary");
+    assert_eq!(h["cache-control"], "public, max-age=31536000, immutable");
+    let etag = h["etag"].to_str().unwrap().to_string();
+    assert!(etag.starts_with('"') && etag.ends_with('"') && etag.len() > 10, "{etag}");
+    let glb = res.bytes().await.unwrap();
+    assert_eq!(&glb[..4], b"glTF");
+
+    // Revalidation: 304 with the same validator, no body.
+    let res = s
+        .client
+        .get(s.url(&format!("/v1/planets/{id}/view.glb?{CAMERA}")))
+        .header("if-none-match", &etag)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(res.status().as_u16(), 304);
+    assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
+    assert!(res.bytes().await.unwrap().is_empty());
+    // Key order does not matter: the query is normalised.
+    let reordered = "max_faces=50000&land_px=8&height=180&width=320&target=0,0,0&eye=7e6,0,3e6";
+    let res = s.get(&format!("/v1/planets/{id}/view.glb?{reordered}")).await;
+    assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
+    assert_eq!(res.bytes().await.unwrap(), glb);
+
+    let res = s.get(&format!("/v1/planets/{id}/rivers.geojson")).await;
+    assert_eq!(res.status().as_u16(), 200);
+    assert_eq!(res.headers()["content-type"], "application/geo+json");
+    assert!(res.headers().contains_key("etag"));
+    let rivers: Value = res.json().await.unwrap();
+    assert_eq!(rivers["type"], "FeatureCollection");
+    assert!(!rivers["features"].as_array().unwrap().is_empty());
+
+    for (file, ctype) in [("landmask.png", "image/png"), ("preview.png", "image/png"), ("elevation.tif", "image/tiff")]
+    {
+        let res = s.get(&format!("/v1/planets/{id}/{file}?width=128")).await;
+        assert_eq!(res.status().as_u16(), 200, "{file}");
+        assert_eq!(res.headers()["content-type"], ctype, "{file}");
+        assert_eq!(res.headers()["cache-control"], "public, max-age=31536000, immutable");
+        let bytes = res.bytes().await.unwrap();
+        if ctype == "image/png" {
+            let img = image::load_from_memory(&bytes).unwrap();
+            assert_eq!((img.width(), img.height()), (128, 64), "{file}");
+        } else {
+            assert!(bytes.starts_with(b"II*\0") || bytes.starts_with(b"MM\0*"));
+        }
+    }
+    // JSON is compressed when the client accepts it.
+    let res = s
+        .client
+        .get(s.url(&format!("/v1/planets/{id}/rivers.geojson")))
+        .header("accept-encoding", "gzip")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(res.headers()["content-encoding"], "gzip");
+
+    let metrics = s.get("/metrics").await.text().await.unwrap();
+    assert!(metrics.contains("riverworld_builds_finished_total 1"), "{metrics}");
+    assert!(metrics
+        .contains(r#"riverworld_http_requests_total{route="/v1/planets/{id}/view.glb",method="GET",status="304"} 1"#));
+    assert!(metrics.contains("riverworld_http_request_duration_seconds_bucket"));
+    assert!(metrics.contains(r#"riverworld_cache_hits_total{cache="response"}"#));
+
+    // Delete: 204, then gone everywhere.
+    let res = s.client.delete(s.url(&format!("/v1/planets/{id}"))).send().await.unwrap();
+    assert_eq!(res.status().as_u16(), 204);
+    expect_error(s.get(&format!("/v1/planets/{id}")).await, 404, "not_found").await;
+    expect_error(s.get(&format!("/v1/planets/{id}/rivers.geojson")).await, 404, "not_found").await;
+    assert!(!s.dir.join(format!("planets/{id}/request.json")).exists());
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn restart_lists_stored_planets_and_rebuilds_them_identically() {
+    let dir = scratch("restart");
+    let s = start(config(&dir)).await;
+    let id = created_id(s.post_json(r#"{"seed": 7, "params": {"base_faces": 2000, "continents": 3}}"#).await).await;
+    s.wait_ready(&id).await;
+    let url = format!("/v1/planets/{id}/view.glb?{CAMERA}");
+    let first = s.get(&url).await.bytes().await.unwrap();
+    let preview = s.get(&format!("/v1/planets/{id}/preview.png?width=64")).await.bytes().await.unwrap();
+    s.stop().await;
+
+    let s = start(config(&dir)).await;
+    let list: Value = s.get("/v1/planets").await.json().await.unwrap();
+    assert_eq!(list["planets"][0]["id"], id.as_str());
+    assert_eq!(list["planets"][0]["status"], "queued");
+    assert_eq!(list["planets"][0]["params"]["continents"], 3);
+    // A derived file of a planet not in memory starts its build and asks to retry.
+    let res = s.get(&url).await;
+    assert_eq!(res.headers()["retry-after"], "1");
+    expect_error(res, 409, "not_ready").await;
+    s.wait_ready(&id).await;
+    assert_eq!(s.get(&url).await.bytes().await.unwrap(), first);
+    let again = s.get(&format!("/v1/planets/{id}/preview.png?width=64")).await.bytes().await.unwrap();
+    assert_eq!(again, preview);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn concurrent_requests_all_succeed() {
+    let s = start(config(&scratch("concurrent"))).await;
+    let id = created_id(s.post_json(r#"{"seed": 11, "params": {"base_faces": 2000}}"#).await).await;
+    s.wait_ready(&id).await;
+    let paths: Vec<String> = (0..16)
+        .map(|i| match i % 4 {
+            0 | 1 => format!("/v1/planets/{id}/view.glb?{CAMERA}"),
+            2 => format!("/v1/planets/{id}/rivers.geojson"),
+            _ => format!("/v1/planets/{id}/landmask.png?width={}", 64 + 2 * i),
+        })
+        .collect();
+    let tasks: Vec<_> = paths
+        .iter()
+        .map(|p| {
+            let (client, url) = (s.client.clone(), s.url(p));
+            tokio::spawn(async move {
+                let res = client.get(url).send().await.unwrap();
+                (res.status().as_u16(), res.bytes().await.unwrap())
+            })
+        })
+        .collect();
+    let mut views = Vec::new();
+    for (t, p) in tasks.into_iter().zip(&paths) {
+        let (status, body) = t.await.unwrap();
+        assert_eq!(status, 200, "{p}");
+        if p.contains("view.glb") {
+            views.push(body);
+        }
+    }
+    assert!(views.windows(2).all(|w| w[0] == w[1]));
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_full_queue_answers_429_and_stores_nothing() {
+    let dir = scratch("queue");
+    let cfg =
+        riverworld::server::Config { workers: 1, max_queue: 1, build_delay: Duration::from_secs(10), ..config(&dir) };
+    let s = start(cfg).await;
+    created_id(s.post_json(r#"{"seed": 1, "params": {"base_faces": 200}}"#).await).await;
+    created_id(s.post_json(r#"{"seed": 2, "params": {"base_faces": 200}}"#).await).await;
+    let res = s.post_json(r#"{"seed": 3, "params": {"base_faces": 200}}"#).await;
+    assert!(res.headers()["retry-after"].to_str().unwrap().parse::<u32>().unwrap() >= 1);
+    expect_error(res, 429, "queue_full").await;
+    let list: Value = s.get("/v1/planets").await.json().await.unwrap();
+    assert_eq!(list["planets"].as_array().unwrap().len(), 2);
+    assert_eq!(std::fs::read_dir(dir.join("planets")).unwrap().count(), 2);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn builtin_earth_becomes_ready_and_cannot_be_deleted() {
+    let cfg = riverworld::server::Config { default_planet: true, ..config(&scratch("earth")) };
+    let s = start(cfg).await;
+    assert_eq!(s.get("/healthz").await.status().as_u16(), 200);
+    let start = std::time::Instant::now();
+    loop {
+        let res = s.get("/readyz").await;
+        if res.status().as_u16() == 200 {
+            break;
+        }
+        expect_error(res, 503, "not_ready").await;
+        assert!(start.elapsed() < Duration::from_secs(40), "earth not ready");
+        tokio::time::sleep(Duration::from_millis(100)).await;
+    }
+    let rec = s.wait_ready("earth").await;
+    assert_eq!(rec["seed"], 42);
+    assert_eq!((rec["map"]["width"].as_u64(), rec["map"]["kind"].as_str()), (Some(1024), Some("continents")));
+    let err = expect_error(s.client.delete(s.url("/v1/planets/earth")).send().await.unwrap(), 403, "protected_planet");
+    err.await;
+    let res = s.get("/v1/planets/earth/landmask.png?width=64").await;
+    assert_eq!(res.status().as_u16(), 200);
+    let yaml = s.get("/openapi.yaml").await;
+    assert_eq!(yaml.headers()["content-type"], "application/yaml");
+    assert!(yaml.text().await.unwrap().starts_with("openapi: 3.1"));
+    s.stop().await;
+}

@@ -1,0 +1,124 @@
+//! Shared by the server tests: a real server on 127.0.0.1 port 0 with a scratch data directory,
+//! a real HTTP client, and a small Earth continent map.
+
+#![allow(dead_code)]
+
+use riverworld::server::{serve, Config, Server};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+/// A camera above the Atlantic off West Africa, small enough for quick views.
+pub const CAMERA: &str = "eye=7e6,0,3e6&target=0,0,0&width=320&height=180&land_px=8&max_faces=50000";
+/// Parameters that keep builds fast.
+pub const FAST: &str = r#"{"base_faces": 2000}"#;
+
+pub struct TestServer {
+    pub base: String,
+    pub dir: PathBuf,
+    pub client: reqwest::Client,
+    server: Option<Server>,
+}
+
+/// A fresh scratch directory.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("riverworld-server-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The test configuration: no built-in planet, inputs under `dir`.
+pub fn config(dir: &Path) -> Config {
+    Config { data_dir: dir.to_path_buf(), default_planet: false, ..Config::default() }
+}
+
+pub async fn start(config: Config) -> TestServer {
+    let dir = config.data_dir.clone();
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let server = serve(config, listener).await.expect("server starts");
+    let base = format!("http://{}", server.local_addr());
+    let client = reqwest::Client::builder().timeout(Duration::from_secs(60)).build().unwrap();
+    TestServer { base, dir, client, server: Some(server) }
+}
+
+impl TestServer {
+    pub fn url(&self, path: &str) -> String {
+        format!("{}{}", self.base, path)
+    }
+
+    pub async fn get(&self, path: &str) -> reqwest::Response {
+        self.client.get(self.url(path)).send().await.unwrap()
+    }
+
+    /// POSTs a map upload with the given parts besides the map.
+    pub async fn post_map(&self, map: Vec<u8>, parts: &[(&str, &str)]) -> reqwest::Response {
+        let mut form =
+            reqwest::multipart::Form::new().part("map", reqwest::multipart::Part::bytes(map).file_name("map.png"));
+        for (k, v) in parts {
+            form = form.text(k.to_string(), v.to_string());
+        }
+        self.client.post(self.url("/v1/planets")).multipart(form).send().await.unwrap()
+    }
+
+    pub async fn post_json(&self, body: &str) -> reqwest::Response {
+        self.client
+            .post(self.url("/v1/planets"))
+            .header("content-type", "application/json")
+            .body(body.to_string())
+            .send()
+            .await
+            .unwrap()
+    }
+
+    /// Polls a planet's record until it is ready (panics on failure or after 30 s).
+    pub async fn wait_ready(&self, id: &str) -> Value {
+        let start = Instant::now();
+        loop {
+            let rec: Value = self.get(&format!("/v1/planets/{id}")).await.json().await.unwrap();
+            match rec["status"].as_str().unwrap() {
+                "ready" => return rec,
+                "failed" => panic!("build failed: {rec}"),
+                _ => {}
+            }
+            assert!(start.elapsed() < Duration::from_secs(30), "not ready after 30 s: {rec}");
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+    }
+
+    pub async fn stop(mut self) {
+        if let Some(s) = self.server.take() {
+            s.shutdown().await.unwrap();
+        }
+    }
+}
+
+/// The shipped 1024x512 Earth continent bitmap, downscaled to 256x128 and encoded as PNG.
+pub fn small_map() -> Vec<u8> {
+    static MAP: OnceLock<Vec<u8>> = OnceLock::new();
+    MAP.get_or_init(|| {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("maps/earth_landmask_ne10m_1024x512.png");
+        let img = image::open(path).unwrap().resize_exact(256, 128, image::imageops::FilterType::Triangle).to_luma8();
+        let mut out = std::io::Cursor::new(Vec::new());
+        img.write_to(&mut out, image::ImageFormat::Png).unwrap();
+        out.into_inner()
+    })
+    .clone()
+}
+
+/// Checks the JSON error shape and headers; returns the error object.
+pub async fn expect_error(res: reqwest::Response, status: u16, code: &str) -> Value {
+    assert_eq!(res.status().as_u16(), status, "{:?}", res.url().path());
+    let h = res.headers().clone();
+    assert_eq!(h["content-type"], "application/json");
+    assert_eq!(h["cache-control"], "no-store");
+    let body: Value = res.json().await.unwrap();
+    let err = body["error"].clone();
+    assert_eq!(err["code"], code, "{body}");
+    assert!(err["message"].as_str().is_some_and(|m| !m.is_empty()), "{body}");
+    let keys: Vec<&String> = err.as_object().unwrap().keys().collect();
+    assert!(keys.iter().all(|k| ["code", "message", "field"].contains(&k.as_str())), "{body}");
+    assert_eq!(body.as_object().unwrap().len(), 1, "{body}");
+    err
+}
