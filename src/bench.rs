@@ -71,7 +71,7 @@ pub fn run(maps: &Path, runs: usize, quick: bool) {
     let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
     match load_map(&src, &MapLimits::default()) {
         Ok(map) => {
-            println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, land 2 px / water 10 px\n");
+            println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
             let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
             crate::bench_adapt::run(&spec);
         }

@@ -9,8 +9,21 @@ use crate::mesh::VertexFlags;
 use glam::DVec3;
 use std::time::Instant;
 
-/// A camera `height` m above sea level at (lat, lon), looking `ahead` m along the ground toward
-/// the heading `bearing_deg` (0 = north), at 1920x1080.
+/// Highest ground or water altitude (above the base sphere) among the base-mesh vertices within
+/// `reach` metres of (lat, lon): a safe floor for a camera there.
+pub fn local_top(mesh: &crate::mesh::Mesh, lat: f64, lon: f64, reach: f64) -> f64 {
+    let p = direction(lat, lon) * mesh.radius;
+    let near = mesh.vertices.iter().filter(|v| v.p().normalize().distance(p.normalize()) * mesh.radius < reach);
+    let top = near.map(|v| v.ground.max(v.water) as f64).fold(f64::MIN, f64::max);
+    if top == f64::MIN {
+        mesh.vertices.iter().map(|v| v.ground.max(v.water) as f64).fold(0.0, f64::max)
+    } else {
+        top
+    }
+}
+
+/// A camera `height` m above the altitude `sea` (above the base sphere) at (lat, lon), looking
+/// `ahead` m along the ground toward the heading `bearing_deg` (0 = north), at 1920x1080.
 pub fn ground_camera(radius: f64, sea: f64, lat: f64, lon: f64, height: f64, ahead: f64, bearing_deg: f64) -> Camera {
     let up = direction(lat, lon);
     let north = (DVec3::Z - up * up.z).normalize_or(DVec3::X);
@@ -66,10 +79,16 @@ pub fn run(spec: &PlanetSpec) {
     let (rlat, rlon) = crate::build::continents::lat_lon(planet.mesh.pos(river));
     let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 2.0, 10.0, r)
         .expect("orbit camera");
+    let _ = sea;
+    let top1 = local_top(&planet.mesh, rlat, rlon, 150_000.0);
+    let top2 = local_top(&planet.mesh, rlat + 0.3, rlon + 0.3, 150_000.0);
     let views = [
         ("orbit view", orbit),
-        ("ground view 1 (2 km up)", ground_camera(r, sea, rlat, rlon, 2000.0, 20_000.0, 0.0)),
-        ("ground view 2 (300 m up)", ground_camera(r, sea, rlat + 0.3, rlon + 0.3, 300.0, 3000.0, 135.0)),
+        ("ground view 1 (2 km above the local peaks)", ground_camera(r, top1, rlat, rlon, 2000.0, 20_000.0, 0.0)),
+        (
+            "ground view 2 (300 m above the local peaks)",
+            ground_camera(r, top2, rlat + 0.3, rlon + 0.3, 300.0, 3000.0, 135.0),
+        ),
     ];
     println!("Base mesh: {} faces, {} vertices.\n", planet.stats.faces, planet.stats.vertices);
     println!("| view | faces | memory (MB) | bytes/vertex | adapt from base (ms) | new M tris/s | static pass (ms) | static M tris/s |");
@@ -97,7 +116,7 @@ pub fn run(spec: &PlanetSpec) {
             s.faces as f64 / pass_ms / 1000.0
         );
     }
-    let path = fly_through(r, sea, rlat, rlon, 30);
+    let path = fly_through(r, top1, rlat, rlon, 30);
     let mut a = Adapter::new(planet.mesh.clone(), p.clone());
     let (mut max_faces, mut max_ms, mut total_ms, mut max_bytes, mut new_tris) = (0usize, 0.0f64, 0.0, 0.0f64, 0usize);
     let mut before = planet.stats.faces;

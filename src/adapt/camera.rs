@@ -15,11 +15,14 @@ use glam::DVec3;
 
 /// Paper's constant for the level-of-detail falloff outside the frustum (eq. 6).
 pub const C_LOD: f64 = 20.0;
-/// Default target projected edge length on land, pixels. The paper used 0.5 px at 1920x1080;
-/// 2 px keeps a full-HD view near a million faces on two CPU cores.
-pub const DEFAULT_LAND_PX: f64 = 2.0;
-/// Default target projected edge length on the sea, pixels (the paper used 5 px with 0.5 on land).
-pub const DEFAULT_WATER_PX: f64 = 10.0;
+/// Default target projected edge length on land, pixels. The paper used 0.5 px at 1920x1080 on a
+/// GPU; the criterion measures edge length over distance, so grazing ground views carry many
+/// faces per pixel, and 8 px keeps a full-HD ground view near two million faces on a CPU.
+pub const DEFAULT_LAND_PX: f64 = 8.0;
+/// Default target projected edge length on the sea, pixels (the paper: ten times the land's).
+pub const DEFAULT_WATER_PX: f64 = 40.0;
+/// Height above the base sphere that horizon culling allows for (the highest mountains).
+pub const HORIZON_HEIGHT: f64 = 20_000.0;
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 8192;
 
@@ -228,7 +231,7 @@ pub struct View {
     /// Split when `lod_len / distance > c`.
     pub c_land: f64,
     pub c_water: f64,
-    /// Scale for the eq. 6 falloff: how far outside the frustum counts as "one frustum width".
+    /// Scale for the eq. 6 falloff: the tangent of the half vertical field of view.
     falloff: f64,
     /// Horizon plane: a ball whose support along `eye_dir` is below this is behind the horizon.
     eye_dir: DVec3,
@@ -251,20 +254,19 @@ impl View {
             (f * tan_v + u).normalize(),
         ];
         let ppr = cam.pixels_per_radian();
-        let height = (cam.eye.length() - radius).max(1.0);
-        // The horizon of the base sphere, pushed back by how far beyond it a point as high as
-        // the eye or 20 km could still be seen.
+        // Horizon: a point as high as HORIZON_HEIGHT above the base sphere is hidden once its
+        // angle from the eye's direction exceeds the eye's horizon angle plus its own.
         let d_eye = cam.eye.length();
-        let horizon_plane = radius * radius / d_eye;
-        let margin = (2.0 * radius * 20_000.0f64.max(height)).sqrt();
+        let beyond = (radius / d_eye).clamp(-1.0, 1.0).acos() + (radius / (radius + HORIZON_HEIGHT)).acos();
+        let horizon_plane = if beyond < std::f64::consts::PI { radius * beyond.cos() } else { f64::MIN };
         View {
             eye: cam.eye,
             planes,
             c_land: cam.land_px / ppr,
             c_water: cam.water_px / ppr,
-            falloff: height.max(1.0) * tan_v,
+            falloff: tan_v,
             eye_dir: cam.eye / d_eye,
-            horizon: horizon_plane - margin,
+            horizon: horizon_plane,
             min_len: min_len.max(0.0),
         }
     }
@@ -286,7 +288,11 @@ impl View {
         for n in &self.planes {
             outside = outside.max(-n.dot(rel) - radius);
         }
-        let q = outside / self.falloff;
+        // Eq. 6 measures how far outside the frustum a point is in projected units; here the
+        // ball's distance outside the side planes over its farthest distance from the eye (an
+        // angle-like ratio that can only grow from a ball to a ball inside it), in units of the
+        // half-field of view.
+        let q = outside / ((rel.length() + radius).max(1e-3) * self.falloff);
         let d = d * (1.0 + C_LOD * q * q); // eq. 6
         let c = if sea { self.c_water } else { self.c_land };
         lod_len > c * d
@@ -380,7 +386,7 @@ mod tests {
         // Behind the planet: never.
         assert!(!view.wants_split(1.0e6, -near, 0.0, false));
         // Sea needs longer edges than land.
-        let l = 3000.0;
+        let l = 12_000.0;
         assert!(view.wants_split(l, near, 0.0, false) && !view.wants_split(l, near, 0.0, true));
     }
 }

