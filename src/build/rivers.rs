@@ -6,6 +6,7 @@
 //! network floods upwards from the coast and rivers settle in the map's valleys.
 
 use crate::maps::Map;
+use crate::mesh::altitude::riverbank_floor;
 use crate::mesh::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
 use crate::mesh::{split_kinds, EdgeKind, Mesh, SplitSite, Vertex, VertexFlags, NONE};
 use crate::params::Params;
@@ -363,9 +364,7 @@ fn base_split_vertex(
             for (_, v) in around {
                 let le = horizontal(v);
                 if v.flags.intersects(wet) || v.submerged() {
-                    let bank = (v.ground as f64 + le * p.riverbed_slope())
-                        .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope());
-                    lo = lo.max(bank);
+                    lo = lo.max(riverbank_floor(v, le, p));
                 } else {
                     // Eq. 12: no steeper than the maximum ground slope towards other land.
                     lo = lo.max(v.ground as f64 - le * p.ground_slope());

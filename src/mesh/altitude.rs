@@ -23,6 +23,14 @@ pub fn land_roughness(edge_len: f64) -> f64 {
     0.15 * edge_len / (1.0 + edge_len / 2000.0)
 }
 
+/// Eq. 11: the lowest ground a vertex `le` metres (horizontally) from the wet vertex `v` may
+/// have — up the riverbed at `s_rb`, or `epsilon_rb` above the water plus `s_p`, whichever is
+/// lower.
+pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
+    (v.ground as f64 + le * p.riverbed_slope())
+        .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope())
+}
+
 /// Horizontal distance between two planet points (on the base sphere).
 fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
     p.normalize().distance(q.normalize()) * radius
@@ -109,9 +117,7 @@ fn continent_vertex(
     let mut hi = f64::MAX;
     for (v, le) in around.iter().zip(lens) {
         if is_wet(v) {
-            let bank = (v.ground as f64 + le * p.riverbed_slope())
-                .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope());
-            bank_lo = bank_lo.max(bank);
+            bank_lo = bank_lo.max(riverbank_floor(v, le, p));
         } else {
             slope_lo = slope_lo.max(v.ground as f64 - le * p.ground_slope());
             hi = hi.min(v.ground as f64 + le * p.ground_slope());
