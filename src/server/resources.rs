@@ -81,16 +81,7 @@ fn prepare(res: Resource, query: &str, params: &Params, max_faces_cap: usize) ->
                 if k != "max_faces" {
                     return Err(unknown_key(&k, "eye, target, up, fov, width, height, land_px, water_px, max_faces"));
                 }
-                max_faces = match v.trim().parse::<usize>() {
-                    Ok(n) if (1..=max_faces_cap).contains(&n) => n,
-                    _ => {
-                        return Err(ApiError::unprocessable(
-                            "invalid_parameter",
-                            "max_faces",
-                            format!("must be a whole number in 1..={max_faces_cap}, got {v:?}"),
-                        ))
-                    }
-                };
+                max_faces = whole_number_in("max_faces", &v, 1, max_faces_cap)?;
             }
             let norm = format!("{}&max_faces={max_faces}", cam.to_query());
             Ok((Job::View { cam, max_faces }, norm))
@@ -105,16 +96,7 @@ fn prepare(res: Resource, query: &str, params: &Params, max_faces_cap: usize) ->
                 if k != "width" {
                     return Err(unknown_key(k, "width"));
                 }
-                width = match v.trim().parse::<u32>() {
-                    Ok(w) if (2..=MAX_RASTER_WIDTH).contains(&w) => w,
-                    _ => {
-                        return Err(ApiError::unprocessable(
-                            "invalid_parameter",
-                            "width",
-                            format!("must be a whole number in 2..={MAX_RASTER_WIDTH}, got {v:?}"),
-                        ))
-                    }
-                };
+                width = whole_number_in("width", v, 2, MAX_RASTER_WIDTH)?;
             }
             Ok((Job::Raster { width }, format!("width={width}")))
         }
@@ -253,4 +235,19 @@ pub async fn preview(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: H
 }
 pub async fn elevation(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h: HeaderMap) -> Answer {
     get(Resource::Elevation, s.0, p.0, q.0, h).await
+}
+
+/// Parses a query value as a whole number in `lo..=hi`, or a 422 naming the parameter.
+fn whole_number_in<T>(name: &'static str, v: &str, lo: T, hi: T) -> Result<T, ApiError>
+where
+    T: std::str::FromStr + PartialOrd + std::fmt::Display,
+{
+    match v.trim().parse::<T>() {
+        Ok(n) if n >= lo && n <= hi => Ok(n),
+        _ => Err(ApiError::unprocessable(
+            "invalid_parameter",
+            name,
+            format!("must be a whole number in {lo}..={hi}, got {v:?}"),
+        )),
+    }
 }
