@@ -134,6 +134,24 @@ struct ServeArgs {
     /// Do not serve the built-in planet earth.
     #[arg(long)]
     no_default_planet: bool,
+    /// Require `Authorization: Bearer TOKEN` on POST and DELETE (reads stay public). Also read
+    /// from the environment variable RIVERWORLD_API_TOKEN, which is safer: command lines are
+    /// visible to other local users. Without a token the server warns that it is open.
+    #[arg(long, value_name = "TOKEN", hide_default_value = true)]
+    api_token: Option<String>,
+    /// Renders of uncached answers (views, rasters) running at once [default: one per CPU core,
+    /// at least 2].
+    #[arg(long, default_value_t = 0, hide_default_value = true)]
+    render_permits: usize,
+    /// Renders that may wait for a permit; more answer 429 busy.
+    #[arg(long, default_value_t = 16)]
+    render_queue: usize,
+    /// Widest raster (landmask.png, preview.png, elevation.tif) a request may ask for.
+    #[arg(long, default_value_t = 8192, value_parser = clap::value_parser!(u32).range(2..=16384))]
+    max_raster_width: u32,
+    /// Most pixels an uploaded map may declare, in units of 2^20 pixels (checked before decoding).
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u64).range(1..=1024))]
+    max_map_mpixels: u64,
 }
 
 fn run_serve(args: ServeArgs) -> Result<(), String> {
@@ -158,6 +176,15 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         request_timeout: std::time::Duration::from_secs(args.timeout_s),
         default_planet: !args.no_default_planet,
         build_delay: std::time::Duration::ZERO,
+        api_token: match args.api_token.or_else(|| std::env::var("RIVERWORLD_API_TOKEN").ok()) {
+            Some(token) => Some(server::auth::ApiToken::new(&token)?),
+            None => None,
+        },
+        render_permits: args.render_permits,
+        render_queue: args.render_queue,
+        max_raster_width: args.max_raster_width,
+        max_map_pixels: args.max_map_mpixels << 20,
+        render_delay: std::time::Duration::ZERO,
     };
     let runtime = tokio::runtime::Runtime::new().map_err(|e| format!("cannot start the runtime: {e}"))?;
     runtime.block_on(async move {

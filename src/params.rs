@@ -178,7 +178,15 @@ impl PlanetRequest {
     /// Parses and validates a JSON request; syntax errors and unknown fields name the place.
     pub fn from_json(text: &str) -> Result<PlanetRequest, ParamError> {
         let body = |message: String| ParamError { field: "body".into(), message };
-        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| body(e.to_string()))?;
+        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+            // A number out of range (1e999) stops the parse inside a field: name that field.
+            let mut de = serde_json::Deserializer::from_str(text);
+            let field = match serde_path_to_error::deserialize::<_, PlanetRequest>(&mut de) {
+                Err(pe) if pe.path().to_string() != "." => pe.path().to_string(),
+                _ => "body".to_string(),
+            };
+            ParamError { field, message: e.to_string() }
+        })?;
         if !value.is_object() {
             return Err(body("expected a JSON object {\"seed\": N, \"params\": {...}}".into()));
         }

@@ -107,3 +107,158 @@ async fn bodies_over_the_limit_answer_413() {
     expect_error(res, 413, "body_too_large").await;
     s.stop().await;
 }
+
+/// A PNG of `w`x`h` 16-bit grayscale pixels.
+fn png16(w: u32, h: u32) -> Vec<u8> {
+    let img = image::ImageBuffer::<image::Luma<u16>, Vec<u16>>::from_fn(w, h, |x, _| image::Luma([(x * 500) as u16]));
+    let mut out = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut out, image::ImageFormat::Png).unwrap();
+    out.into_inner()
+}
+
+/// A PNG of `w`x`h` RGB pixels.
+fn png_rgb(w: u32, h: u32) -> Vec<u8> {
+    let img = image::RgbImage::from_fn(w, h, |x, _| image::Rgb([x as u8, 0, 0]));
+    let mut out = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut out, image::ImageFormat::Png).unwrap();
+    out.into_inner()
+}
+
+/// POSTs `bytes` as the map part with the given part content type.
+async fn post_typed(s: &TestServer, bytes: Vec<u8>, mime: &str, parts: &[(&str, &str)]) -> reqwest::Response {
+    let part = reqwest::multipart::Part::bytes(bytes).file_name("map.png").mime_str(mime).unwrap();
+    let mut form = reqwest::multipart::Form::new().part("map", part);
+    for (k, v) in parts {
+        form = form.text(k.to_string(), v.to_string());
+    }
+    s.client.post(s.url("/v1/planets")).multipart(form).send().await.unwrap()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
+    let dir = scratch("hostile");
+    let s = start(config(&dir)).await;
+    let id =
+        s.post_json(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await.json::<serde_json::Value>().await.unwrap()
+            ["id"]
+            .as_str()
+            .unwrap()
+            .to_string();
+    s.wait_ready(&id).await;
+
+    // Content sniffing: the bytes decide, whatever the declared content type.
+    let jpeg = [&[0xFF, 0xD8, 0xFF, 0xE0, 0, 16][..], b"JFIF\0", &[0u8; 64]].concat();
+    let gif = [&b"GIF89a"[..], &[1, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0]].concat();
+    for (bytes, mime) in [
+        (jpeg, "image/png"),
+        (gif, "image/png"),
+        (b"%PDF-1.7 not a map".to_vec(), "image/tiff"),
+        (vec![0u8; 2048], "image/png"),
+        (Vec::new(), "image/png"),
+    ] {
+        let err = expect_error(post_typed(&s, bytes, mime, &[]).await, 415, "unsupported_format").await;
+        assert_eq!(err["field"], "map");
+    }
+    // A real PNG labelled as something else is accepted (here: refused later only for its content).
+    let err = expect_error(post_typed(&s, png_rgb(64, 32), "text/plain", &[]).await, 422, "wrong_color_type").await;
+    assert_eq!(err["field"], "map");
+
+    // Bit depth and colour model that the map kind does not take.
+    let err = expect_error(s.post_map(png16(64, 32), &[("map_kind", "continents")]).await, 422, "wrong_bit_depth");
+    assert_eq!(err.await["field"], "map");
+    let err = expect_error(s.post_map(png16(64, 32), &[]).await, 422, "wrong_bit_depth").await;
+    assert!(err["message"].as_str().unwrap().contains("16-bit"), "{err}");
+
+    // Decompression bombs: the header's size is refused before any pixel is decoded.
+    let mut bomb = small_map();
+    bomb[16..20].copy_from_slice(&65_535u32.to_be_bytes());
+    bomb[20..24].copy_from_slice(&65_535u32.to_be_bytes());
+    let err = expect_error(s.post_map(bomb, &[]).await, 422, "image_too_large").await;
+    assert_eq!(err["field"], "map");
+    // A header that promises more pixels than the file could hold is corrupt.
+    let mut liar = small_map();
+    liar[16..20].copy_from_slice(&4096u32.to_be_bytes());
+    liar[20..24].copy_from_slice(&2048u32.to_be_bytes());
+    expect_error(s.post_map(liar, &[]).await, 422, "corrupt_image").await;
+
+    // Truncated and damaged PNG and TIFF.
+    let mut bad_png = small_map();
+    let mid = bad_png.len() / 2;
+    bad_png[mid..mid + 64].fill(0xA5);
+    expect_error(s.post_map(bad_png, &[]).await, 422, "corrupt_image").await;
+    expect_error(s.post_map(small_map()[..40].to_vec(), &[]).await, 422, "corrupt_image").await;
+    let tif = s.get(&format!("/v1/planets/{id}/elevation.tif?width=64")).await.bytes().await.unwrap().to_vec();
+    assert_eq!(s.post_map(tif.clone(), &[("params", r#"{"base_faces": 200}"#)]).await.status().as_u16(), 202);
+    for cut in [8, 100, tif.len() / 2, tif.len() - 10] {
+        let err = expect_error(s.post_map(tif[..cut].to_vec(), &[]).await, 422, "corrupt_image").await;
+        assert_eq!(err["field"], "map", "cut at {cut}");
+    }
+    let mut garbled = tif.clone();
+    garbled[4..8].copy_from_slice(&u32::MAX.to_le_bytes()); // the first IFD's offset
+    expect_error(s.post_map(garbled, &[]).await, 422, "corrupt_image").await;
+
+    // NaN, infinities and absurd numbers name their field.
+    for (body, field) in [
+        (r#"{"params": {"radius_m": 1e999}}"#, "params.radius_m"),
+        (r#"{"params": {"radius_m": -1e308}}"#, "params.radius_m"),
+        (r#"{"params": {"land_percent": -0.0}}"#, "params.land_percent"),
+        (r#"{"params": {"continents": 1e9}}"#, "params.continents"),
+        (r#"{"params": {"base_faces": 99999999999}}"#, "params.base_faces"),
+        (r#"{"params": {"sea_level_m": "NaN"}}"#, "params.sea_level_m"),
+        (r#"{"seed": -1}"#, "seed"),
+        (r#"{"seed": 1.5}"#, "seed"),
+        (r#"{"seed": 18446744073709551616}"#, "seed"),
+    ] {
+        let err = expect_error(s.post_json(body).await, 422, "invalid_params").await;
+        assert_eq!(err["field"], field, "{body}: {err}");
+    }
+    for (parts, code, field) in [
+        (&[("map_range", "NaN,100")][..], "invalid_map_range", "map_range"),
+        (&[("map_range", "-inf,100")], "invalid_map_range", "map_range"),
+        (&[("map_range", "1e400,2")], "invalid_map_range", "map_range"),
+        (&[("map_bounds", "nan,0,10,10")], "invalid_bounds", "map_bounds"),
+        (&[("map_bounds", "0,0,1e999,10")], "invalid_bounds", "map_bounds"),
+        (&[("params", r#"{"land_percent": NaN}"#)], "invalid_params", "params"),
+        (&[("seed", "1e3")], "invalid_params", "seed"),
+    ] {
+        let err = expect_error(s.post_map(small_map(), parts).await, 422, code).await;
+        assert_eq!(err["field"], field, "{parts:?}: {err}");
+    }
+    let view = format!("/v1/planets/{id}/view.glb");
+    for (query, code, field) in [
+        ("eye=NaN,0,2e7&target=0,0,0", "invalid_camera", "eye"),
+        ("eye=0,0,inf&target=0,0,0", "invalid_camera", "eye"),
+        ("eye=0,0,2e7&target=0,0,0&fov=inf", "invalid_camera", "fov"),
+        ("eye=0,0,2e7&target=0,0,0&land_px=1e308", "invalid_camera", "land_px"),
+        ("eye=0,0,2e7&target=0,0,0&width=99999999999999999999", "invalid_camera", "width"),
+        ("eye=0,0,2e7&target=0,0,0&max_faces=1e9", "invalid_parameter", "max_faces"),
+        ("eye=0,0,2e7&target=0,0,0&max_faces=-1", "invalid_parameter", "max_faces"),
+    ] {
+        let err = expect_error(s.get(&format!("{view}?{query}")).await, 422, code).await;
+        assert_eq!(err["field"], field, "{query}");
+    }
+    let err = expect_error(s.get(&format!("/v1/planets/{id}/preview.png?width=NaN")).await, 422, "invalid_parameter");
+    assert_eq!(err.await["field"], "width");
+
+    // Ids of the wrong shape never reach the store, however they are spelled.
+    for path in [
+        "/v1/planets/%2e%2e",
+        "/v1/planets/..%2f..%2fplanets",
+        "/v1/planets/0123456789abcde%00",
+        "/v1/planets/0123456789abcdef0",
+        "/v1/planets/%30123456789abcdef",
+        "/v1/planets/earth%2f..%2f..",
+    ] {
+        expect_error(s.get(path).await, 404, "not_found").await;
+        expect_error(s.client.delete(s.url(path)).send().await.unwrap(), 404, "not_found").await;
+    }
+
+    // Still serving: reads and a good upload work, and nothing refused was stored.
+    assert_eq!(s.get("/healthz").await.status().as_u16(), 200);
+    assert_eq!(s.get(&format!("/v1/planets/{id}/rivers.geojson")).await.status().as_u16(), 200);
+    let res = s.post_map(small_map(), &[("params", r#"{"base_faces": 500}"#)]).await;
+    assert_eq!(res.status().as_u16(), 202);
+    let stored = std::fs::read_dir(dir.join("planets")).unwrap().count();
+    assert_eq!(stored, 3, "the JSON planet, the GeoTIFF planet and the good upload");
+    s.stop().await;
+}

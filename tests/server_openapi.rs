@@ -115,3 +115,31 @@ async fn every_documented_operation_answers_as_documented() {
     assert_eq!(operations, 13);
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn refused_writes_answer_as_documented() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/openapi.yaml")).unwrap();
+    let doc: Value = serde_yaml::from_str(&text).unwrap();
+    let token = riverworld::server::auth::ApiToken::new("documented-token").unwrap();
+    let s = start(riverworld::server::Config { api_token: Some(token), ..config(&scratch("openapi-auth")) }).await;
+    let mut writes = 0;
+    for (path, item) in doc["paths"].as_object().unwrap() {
+        for (method, op) in item.as_object().unwrap() {
+            if !["post", "delete"].contains(&method.as_str()) {
+                continue;
+            }
+            writes += 1;
+            assert!(op["security"].as_array().is_some_and(|s| !s.is_empty()), "{method} {path}: no security");
+            let url = s.url(&path.replace("{id}", "0123456789abcdef"));
+            let m = reqwest::Method::from_bytes(method.to_uppercase().as_bytes()).unwrap();
+            let res = s.client.request(m.clone(), &url).send().await.unwrap();
+            assert_eq!(res.status().as_u16(), 401);
+            check(&doc, &s, path, method, op, res).await;
+            let res = s.client.request(m, &url).bearer_auth("wrong").send().await.unwrap();
+            assert_eq!(res.status().as_u16(), 403);
+            check(&doc, &s, path, method, op, res).await;
+        }
+    }
+    assert_eq!(writes, 2);
+    s.stop().await;
+}

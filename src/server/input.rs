@@ -47,7 +47,7 @@ pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
 }
 
 /// Reads and validates a POST body of either content type.
-pub async fn read(req: Request<Body>, body_limit: usize) -> Result<NewPlanet, ApiError> {
+pub async fn read(req: Request<Body>, limits: MapLimits) -> Result<NewPlanet, ApiError> {
     let ctype = req.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_string();
     let mime = ctype.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
     match mime.as_str() {
@@ -60,7 +60,7 @@ pub async fn read(req: Request<Body>, body_limit: usize) -> Result<NewPlanet, Ap
         }
         "multipart/form-data" => {
             let mp = Multipart::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
-            read_multipart(mp, body_limit).await
+            read_multipart(mp, limits).await
         }
         "" => Err(unsupported("no Content-Type")),
         other => Err(unsupported(other)),
@@ -89,7 +89,7 @@ fn text_part(name: &str, bytes: &[u8]) -> Result<String, ApiError> {
         .map_err(|_| ApiError::unprocessable("invalid_field", name, format!("{name} is not UTF-8 text")))
 }
 
-async fn read_multipart(mut mp: Multipart, body_limit: usize) -> Result<NewPlanet, ApiError> {
+async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlanet, ApiError> {
     let (mut map, mut kind, mut range, mut bounds, mut seed, mut params) = (None, None, None, None, None, None);
     loop {
         let field = match mp.next_field().await {
@@ -139,7 +139,6 @@ async fn read_multipart(mut mp: Multipart, body_limit: usize) -> Result<NewPlane
     let request = PlanetRequest::from_json(&body.to_string()).map_err(|e| ApiError::from_params(&e))?;
     let is_tiff = map.starts_with(b"II*\0") || map.starts_with(b"MM\0*");
     let kind = kind.unwrap_or(if is_tiff || range.is_some() { MapKind::Elevation } else { MapKind::Continents });
-    let limits = MapLimits { max_bytes: body_limit, ..MapLimits::default() };
     let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
     Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: Some(meta) }, map: Some(map) })

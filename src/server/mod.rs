@@ -7,10 +7,12 @@
 //! planet `earth` (the shipped Earth continent bitmap, seed 42, default parameters) is built at
 //! start; `/readyz` answers 200 once it is.
 
+pub mod auth;
 pub mod cache;
 pub mod error;
 pub mod input;
 pub mod jobs;
+pub mod limit;
 pub mod metrics;
 pub mod planets;
 pub mod resources;
@@ -65,6 +67,20 @@ pub struct Config {
     pub default_planet: bool,
     /// A pause before each build starts; zero in service, lets tests observe a full queue.
     pub build_delay: Duration,
+    /// Token that `POST` and `DELETE` must present as `Authorization: Bearer`; None = open.
+    pub api_token: Option<auth::ApiToken>,
+    /// Heavy renders (answers that are not cached) running at once; 0 = one per CPU core, at
+    /// least 2.
+    pub render_permits: usize,
+    /// Heavy renders that may wait for a permit; more answer 429 `busy`.
+    pub render_queue: usize,
+    /// Widest raster (`width` of landmask.png, preview.png, elevation.tif) a request may ask for.
+    pub max_raster_width: u32,
+    /// Most pixels (width x height, read from the header before decoding) an uploaded map may have.
+    pub max_map_pixels: u64,
+    /// A pause inside each heavy render while it holds its permit; zero in service, lets tests
+    /// observe busy permits and request timeouts.
+    pub render_delay: Duration,
 }
 
 impl Default for Config {
@@ -81,6 +97,12 @@ impl Default for Config {
             request_timeout: Duration::from_secs(120),
             default_planet: true,
             build_delay: Duration::ZERO,
+            api_token: None,
+            render_permits: 0,
+            render_queue: 16,
+            max_raster_width: resources::MAX_RASTER_WIDTH,
+            max_map_pixels: crate::maps::MapLimits::default().max_pixels,
+            render_delay: Duration::ZERO,
         }
     }
 }
@@ -132,7 +154,16 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
         }
     }
     tracing::info!(planets = planets.len(), "stored planets found");
-    let permits = std::thread::available_parallelism().map_or(2, |n| n.get()).max(2);
+    if config.api_token.is_none() {
+        tracing::warn!(
+            "no API token: anyone who can reach this server can create and delete planets; \
+             set --api-token or RIVERWORLD_API_TOKEN to require Authorization: Bearer on POST and DELETE"
+        );
+    }
+    let permits = match config.render_permits {
+        0 => std::thread::available_parallelism().map_or(2, |n| n.get()).max(2),
+        n => n,
+    };
     let state = Arc::new(AppState {
         pool: jobs::Pool::new(config.workers, config.max_queue),
         cache: cache::ByteLru::new(config.cache_bytes),
@@ -140,7 +171,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
         ready: AtomicBool::new(!config.default_planet),
         runtime: tokio::runtime::Handle::current(),
         inflight: Mutex::new(Default::default()),
-        renders: tokio::sync::Semaphore::new(permits),
+        renders: limit::HeavyLimit::new(permits, config.render_queue),
         planets: RwLock::new(planets),
         store,
         config,
@@ -186,7 +217,7 @@ fn png_size(png: &[u8]) -> (u32, u32) {
 }
 
 /// All routes with their layers (outermost first: trace, CORS, compression, JSON errors,
-/// metrics, timeout, body limit).
+/// metrics, timeout, access control, body limit).
 fn router(state: Arc<AppState>) -> Result<Router, String> {
     let c = &state.config;
     let origin = if c.cors_origin.trim() == "*" {
@@ -202,8 +233,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
     let cors = CorsLayer::new()
         .allow_origin(origin)
         .allow_methods([Method::GET, Method::HEAD, Method::POST, Method::DELETE])
-        .allow_headers([header::CONTENT_TYPE, header::IF_NONE_MATCH])
-        .expose_headers([header::ETAG, header::LOCATION, header::RETRY_AFTER])
+        .allow_headers([header::CONTENT_TYPE, header::IF_NONE_MATCH, header::AUTHORIZATION])
+        .expose_headers([header::ETAG, header::LOCATION, header::RETRY_AFTER, header::WWW_AUTHENTICATE])
         .max_age(Duration::from_secs(86_400));
     let textual = |_: StatusCode, _: Version, h: &HeaderMap, _: &axum::http::Extensions| {
         let ct = h.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
@@ -225,6 +256,7 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .fallback(not_found)
         .layer(DefaultBodyLimit::max(c.body_limit))
         .layer(RequestBodyLimitLayer::new(c.body_limit))
+        .layer(middleware::from_fn_with_state(Arc::clone(&state), auth::require_token))
         .layer(TimeoutLayer::with_status_code(StatusCode::SERVICE_UNAVAILABLE, c.request_timeout))
         .layer(middleware::from_fn_with_state(Arc::clone(&state), metrics::track))
         .layer(middleware::from_fn(error::json_errors))
@@ -265,6 +297,8 @@ async fn metrics_text(State(state): State<Arc<AppState>>) -> Response {
         ("riverworld_build_jobs", "Build jobs running or waiting.", state.pool.load() as f64),
         ("riverworld_cache_bytes", "Bytes held by the in-memory cache.", state.cache.bytes() as f64),
         ("riverworld_planets", "Known planets.", planets),
+        ("riverworld_renders_running", "Heavy renders holding a permit.", state.renders.running() as f64),
+        ("riverworld_renders_waiting", "Heavy renders waiting for a permit.", state.renders.waiting() as f64),
     ]);
     plain("text/plain; version=0.0.4; charset=utf-8", text)
 }

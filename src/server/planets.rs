@@ -3,6 +3,7 @@
 use super::error::ApiError;
 use super::input::{self, planet_id};
 use super::state::{queue_full, AppState, Entry, EARTH_ID};
+use crate::maps::MapLimits;
 use axum::body::Body;
 use axum::extract::{Path, State};
 use axum::http::{header, HeaderValue, Request, StatusCode};
@@ -27,9 +28,10 @@ fn with_location(mut res: Response, id: &str) -> Response {
 
 /// `POST /v1/planets`: 202 with the new record, or 200/202 with the existing one.
 pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> Result<Response, ApiError> {
-    let new = input::read(req, state.config.body_limit).await?;
+    let limits = MapLimits { max_bytes: state.config.body_limit, max_pixels: state.config.max_map_pixels };
+    let new = input::read(req, limits).await?;
     let id = planet_id(&new.input, new.map.as_deref());
-    if let Some(entry) = state.entry(&id) {
+    if let Some(entry) = state.lookup(&id).await? {
         return Ok(existing(&state, &entry));
     }
     let slot = state.pool.reserve().ok_or_else(queue_full)?;
@@ -60,16 +62,18 @@ fn existing(state: &Arc<AppState>, entry: &Arc<Entry>) -> Response {
     with_location(json(status, &record), &entry.id)
 }
 
-/// `GET /v1/planets`: every planet's record, sorted by id.
-pub async fn list(State(state): State<Arc<AppState>>) -> Response {
+/// `GET /v1/planets`: every planet's record, sorted by id, including planets that another
+/// server sharing the store created.
+pub async fn list(State(state): State<Arc<AppState>>) -> Result<Response, ApiError> {
+    state.sync_with_store().await?;
     let entries: Vec<Arc<Entry>> = state.planets.read().expect("planets lock").values().cloned().collect();
     let records: Vec<_> = entries.iter().map(|e| state.record(e)).collect();
-    json(StatusCode::OK, &serde_json::json!({ "planets": records }))
+    Ok(json(StatusCode::OK, &serde_json::json!({ "planets": records })))
 }
 
 /// `GET /v1/planets/{id}`: the record; starts the build of a planet that is not built.
 pub async fn read(State(state): State<Arc<AppState>>, Path(id): Path<String>) -> Result<Response, ApiError> {
-    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    let entry = state.lookup_confirmed(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
     // A full queue only delays the build: the next read tries again.
     let _ = state.ensure_build(&entry);
     Ok(json(StatusCode::OK, &state.record(&entry)))
@@ -84,13 +88,11 @@ pub async fn delete(State(state): State<Arc<AppState>>, Path(id): Path<String>) 
             "the built-in planet earth cannot be deleted",
         ));
     }
-    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    let entry = state.lookup(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
     state.store.delete(&id).await.map_err(|e| {
         ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("cannot delete the inputs: {e}"))
     })?;
-    entry.mark_deleted();
-    state.planets.write().expect("planets lock").remove(&id);
-    state.cache.remove_prefix(&format!("{id}/"));
+    state.forget(&entry);
     tracing::info!(%id, "planet deleted");
     Ok(StatusCode::NO_CONTENT.into_response())
 }

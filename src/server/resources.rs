@@ -9,6 +9,7 @@
 
 use super::error::ApiError;
 use super::state::{AppState, Availability, Cached};
+use super::Config;
 use crate::adapt::{Adapter, Camera};
 use crate::build::Planet;
 use crate::export;
@@ -25,7 +26,7 @@ use tokio::sync::OnceCell;
 pub const DEFAULT_MAX_FACES: usize = 500_000;
 /// Default width of the rasters (height is half).
 pub const DEFAULT_RASTER_WIDTH: u32 = 1024;
-/// Widest raster.
+/// Widest raster by default (`Config::max_raster_width`).
 pub const MAX_RASTER_WIDTH: u32 = 8192;
 
 /// The derived resources.
@@ -71,7 +72,8 @@ fn unknown_key(key: &str, allowed: &str) -> ApiError {
 }
 
 /// Parses the query of `res` into the work to do and its normal form (the cache key).
-fn prepare(res: Resource, query: &str, params: &Params, max_faces_cap: usize) -> Result<(Job, String), ApiError> {
+fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result<(Job, String), ApiError> {
+    let max_faces_cap = caps.max_faces_cap;
     match res {
         Resource::View => {
             let (cam, rest) = Camera::parse_query(query, params.radius_m)
@@ -91,12 +93,12 @@ fn prepare(res: Resource, query: &str, params: &Params, max_faces_cap: usize) ->
             None => Ok((Job::Rivers, String::new())),
         },
         _ => {
-            let mut width = DEFAULT_RASTER_WIDTH;
+            let mut width = DEFAULT_RASTER_WIDTH.min(caps.max_raster_width);
             for (k, v) in pairs(query) {
                 if k != "width" {
                     return Err(unknown_key(k, "width"));
                 }
-                width = whole_number_in("width", v, 2, MAX_RASTER_WIDTH)?;
+                width = whole_number_in("width", v, 2, caps.max_raster_width)?;
             }
             Ok((Job::Raster { width }, format!("width={width}")))
         }
@@ -162,9 +164,9 @@ pub async fn get(
     query: Option<String>,
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
-    let entry = state.entry(&id).ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    let entry = state.lookup(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
     let params = entry.input.params.clone();
-    let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, state.config.max_faces_cap)?;
+    let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
     let tag = etag(&id, res, &norm);
     let key = format!("{id}/{}?{norm}", res.name());
     let ok = |bytes: Bytes| {
@@ -196,7 +198,10 @@ pub async fn get(
     let bytes = cell
         .get_or_try_init(|| async {
             state.metrics.cache_miss("response");
-            let _permit = state.renders.acquire().await.map_err(|_| ApiError::internal("shutting down"))?;
+            let _permit = state.renders.admit().await?;
+            if !state.config.render_delay.is_zero() {
+                tokio::time::sleep(state.config.render_delay).await;
+            }
             let out = tokio::task::spawn_blocking(move || Bytes::from(render(res, &job, &planet, &params)))
                 .await
                 .map_err(|_| ApiError::internal("rendering failed"))?;
@@ -205,14 +210,15 @@ pub async fn get(
             }
             Ok::<Bytes, ApiError>(out)
         })
-        .await?
-        .clone();
+        .await
+        .cloned();
+    // Refused or failed renders leave no cell behind either.
     let mut inflight = state.inflight.lock().expect("inflight lock");
     if inflight.get(&key).is_some_and(|c| Arc::ptr_eq(c, &cell)) {
         inflight.remove(&key);
     }
     drop(inflight);
-    Ok(ok(bytes))
+    Ok(ok(bytes?))
 }
 
 fn entry_gone(state: &AppState, id: &str) -> bool {

@@ -88,7 +88,8 @@ pub struct AppState {
     pub ready: AtomicBool,
     pub runtime: tokio::runtime::Handle,
     pub inflight: Mutex<HashMap<String, Arc<OnceCell<Bytes>>>>,
-    pub renders: tokio::sync::Semaphore,
+    /// Permits for heavy renders, with a bounded wait queue (429 `busy` beyond it).
+    pub renders: super::limit::HeavyLimit,
 }
 
 impl Entry {
@@ -114,6 +115,75 @@ impl AppState {
             return None;
         }
         self.planets.read().expect("planets lock").get(id).cloned()
+    }
+
+    /// The planet `id` from memory or, when it is not known here, from the store: a planet
+    /// created by another server sharing the store is found on its first request.
+    pub async fn lookup(&self, id: &str) -> Result<Option<Arc<Entry>>, ApiError> {
+        if let Some(entry) = self.entry(id) {
+            return Ok(Some(entry));
+        }
+        if !super::valid_hex_id(id) {
+            return Ok(None);
+        }
+        match self.store.input(id).await.map_err(storage_error)? {
+            Some(input) => Ok(Some(self.adopt(id, input))),
+            None => Ok(None),
+        }
+    }
+
+    /// Like [`AppState::lookup`], but also confirms with the store that a planet known in memory
+    /// still exists there (another server may have deleted it); forgets it if not.
+    pub async fn lookup_confirmed(&self, id: &str) -> Result<Option<Arc<Entry>>, ApiError> {
+        let Some(entry) = self.lookup(id).await? else { return Ok(None) };
+        if entry.embedded.is_some() {
+            return Ok(Some(entry));
+        }
+        match self.store.input(id).await.map_err(storage_error)? {
+            Some(_) => Ok(Some(entry)),
+            None => {
+                self.forget(&entry);
+                Ok(None)
+            }
+        }
+    }
+
+    /// Adds a stored planet to the known ones (or returns the entry already there).
+    fn adopt(&self, id: &str, input: StoredInput) -> Arc<Entry> {
+        let mut planets = self.planets.write().expect("planets lock");
+        let entry = planets.entry(id.to_string()).or_insert_with(|| Arc::new(Entry::new(id.to_string(), input, None)));
+        Arc::clone(entry)
+    }
+
+    /// Drops a planet from memory: its entry and every cached answer of it.
+    pub fn forget(&self, entry: &Entry) {
+        entry.mark_deleted();
+        let mut planets = self.planets.write().expect("planets lock");
+        if planets.get(&entry.id).is_some_and(|e| std::ptr::eq(Arc::as_ptr(e), entry)) {
+            planets.remove(&entry.id);
+        }
+        drop(planets);
+        self.cache.remove_prefix(&format!("{}/", entry.id));
+    }
+
+    /// Brings the known planets in line with the store: adopts planets stored by another server,
+    /// forgets those deleted there.
+    pub async fn sync_with_store(&self) -> Result<(), ApiError> {
+        let ids = self.store.ids().await.map_err(|e| storage_error(e.to_string()))?;
+        let known: Vec<Arc<Entry>> = self.planets.read().expect("planets lock").values().cloned().collect();
+        for entry in known {
+            if entry.embedded.is_none() && ids.binary_search(&entry.id).is_err() {
+                self.forget(&entry);
+            }
+        }
+        for id in ids {
+            if self.entry(&id).is_none() {
+                if let Some(input) = self.store.input(&id).await.map_err(storage_error)? {
+                    self.adopt(&id, input);
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The record of a planet as it stands now.
@@ -191,6 +261,11 @@ impl AppState {
     }
 }
 
+/// 500 `storage_error`: the store could not be read.
+pub fn storage_error(e: String) -> ApiError {
+    ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("cannot read the store: {e}"))
+}
+
 /// 429 with `Retry-After`.
 pub fn queue_full() -> ApiError {
     ApiError::new(StatusCode::TOO_MANY_REQUESTS, "queue_full", "the build queue is full; retry later").retry_after(5)
@@ -245,7 +320,12 @@ fn build_entry(state: &AppState, entry: &Entry) -> Result<Planet, ApiError> {
                     ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("reading the map: {e}"))
                 })?,
             };
-            let limits = MapLimits { max_bytes: state.config.body_limit.max(bytes.len()), ..MapLimits::default() };
+            // A stored map was accepted once: the current limits never lock it out.
+            let pixels = u64::from(meta.width) * u64::from(meta.height);
+            let limits = MapLimits {
+                max_bytes: state.config.body_limit.max(bytes.len()),
+                max_pixels: state.config.max_map_pixels.max(pixels),
+            };
             let map = Map::decode(&bytes, meta.kind, meta.range_m, meta.bounds, &limits)
                 .map_err(|e| ApiError::from_map(&e))?;
             Some(Arc::new(map))

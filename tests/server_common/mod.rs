@@ -72,19 +72,9 @@ impl TestServer {
             .unwrap()
     }
 
-    /// Polls a planet's record until it is ready (panics on failure or after 30 s).
+    /// Polls a planet's record until it is ready (panics on failure or after 60 s).
     pub async fn wait_ready(&self, id: &str) -> Value {
-        let start = Instant::now();
-        loop {
-            let rec: Value = self.get(&format!("/v1/planets/{id}")).await.json().await.unwrap();
-            match rec["status"].as_str().unwrap() {
-                "ready" => return rec,
-                "failed" => panic!("build failed: {rec}"),
-                _ => {}
-            }
-            assert!(start.elapsed() < Duration::from_secs(30), "not ready after 30 s: {rec}");
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
+        wait_ready(&self.client, &self.url(&format!("/v1/planets/{id}"))).await
     }
 
     pub async fn stop(mut self) {
@@ -121,4 +111,120 @@ pub async fn expect_error(res: reqwest::Response, status: u16, code: &str) -> Va
     assert!(keys.iter().all(|k| ["code", "message", "field"].contains(&k.as_str())), "{body}");
     assert_eq!(body.as_object().unwrap().len(), 1, "{body}");
     err
+}
+
+/// A `riverworld serve` child process on a free loopback port; killed (SIGKILL) when dropped.
+pub struct Process {
+    pub base: String,
+    pub client: reqwest::Client,
+    child: std::process::Child,
+    log: std::sync::Arc<std::sync::Mutex<String>>,
+}
+
+/// Starts `riverworld serve --addr 127.0.0.1:0 --data DATA --no-default-planet ARGS...` with
+/// extra environment variables and waits until it listens.
+pub fn spawn_server(data: &Path, args: &[&str], env: &[(&str, &str)]) -> Process {
+    use std::io::BufRead;
+    let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_riverworld"));
+    cmd.args(["serve", "--addr", "127.0.0.1:0", "--no-default-planet", "--data"]).arg(data).args(args);
+    cmd.env_remove("RIVERWORLD_API_TOKEN").env("RUST_LOG", "info");
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    cmd.stdout(std::process::Stdio::null()).stderr(std::process::Stdio::piped());
+    let mut child = cmd.spawn().expect("riverworld serve starts");
+    let stderr = child.stderr.take().unwrap();
+    let log = std::sync::Arc::new(std::sync::Mutex::new(String::new()));
+    let (tx, rx) = std::sync::mpsc::channel();
+    let sink = std::sync::Arc::clone(&log);
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stderr).lines() {
+            let Ok(line) = line else { break };
+            if let Some(addr) = line.strip_prefix("riverworld: serving on ") {
+                let _ = tx.send(addr.trim().to_string());
+            }
+            let mut log = sink.lock().unwrap();
+            log.push_str(&line);
+            log.push('\n');
+        }
+    });
+    let base = match rx.recv_timeout(Duration::from_secs(60)) {
+        Ok(base) => base,
+        Err(_) => {
+            let _ = child.kill();
+            panic!("the server did not start: {}", log.lock().unwrap());
+        }
+    };
+    let client = reqwest::Client::builder().timeout(Duration::from_secs(60)).build().unwrap();
+    Process { base, client, child, log }
+}
+
+impl Process {
+    pub fn url(&self, path: &str) -> String {
+        format!("{}{}", self.base, path)
+    }
+
+    pub async fn get(&self, path: &str) -> reqwest::Response {
+        self.client.get(self.url(path)).send().await.unwrap()
+    }
+
+    pub fn pid(&self) -> u32 {
+        self.child.id()
+    }
+
+    /// Everything the server wrote to stderr so far.
+    pub fn log(&self) -> String {
+        self.log.lock().unwrap().clone()
+    }
+
+    /// SIGKILL: no shutdown code runs.
+    pub fn kill9(mut self) {
+        self.child.kill().unwrap();
+        self.child.wait().unwrap();
+    }
+
+    /// Polls a planet's record until it is ready (panics on failure or after 60 s).
+    pub async fn wait_ready(&self, id: &str) -> Value {
+        wait_ready(&self.client, &self.url(&format!("/v1/planets/{id}"))).await
+    }
+}
+
+impl Drop for Process {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Polls the record at `url` until it is ready (panics on failure or after 60 s).
+pub async fn wait_ready(client: &reqwest::Client, url: &str) -> Value {
+    let start = Instant::now();
+    loop {
+        let rec: Value = client.get(url).send().await.unwrap().json().await.unwrap();
+        match rec["status"].as_str().unwrap() {
+            "ready" => return rec,
+            "failed" => panic!("build failed: {rec}"),
+            _ => {}
+        }
+        assert!(start.elapsed() < Duration::from_secs(60), "not ready after 60 s: {rec}");
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+}
+
+/// Fetches `path` until it answers 200, waiting out 409 `not_ready` while the planet (re)builds.
+pub async fn get_built(client: &reqwest::Client, url: &str) -> axum::body::Bytes {
+    let start = Instant::now();
+    loop {
+        let res = client.get(url).send().await.unwrap();
+        match res.status().as_u16() {
+            200 => return res.bytes().await.unwrap(),
+            409 => {
+                let body: Value = res.json().await.unwrap();
+                assert_eq!(body["error"]["code"], "not_ready", "{url}: {body}");
+            }
+            s => panic!("{url}: status {s}: {}", res.text().await.unwrap()),
+        }
+        assert!(start.elapsed() < Duration::from_secs(60), "{url} not built after 60 s");
+        tokio::time::sleep(Duration::from_millis(20)).await;
+    }
 }
