@@ -83,6 +83,18 @@ enum Command {
     /// Serve planets over HTTP (see openapi.yaml); without options, the built-in planet `earth`
     /// on 127.0.0.1:8080 with inputs stored under ./data.
     Serve(ServeArgs),
+    /// Write the planet as 3D Tiles 1.1: tileset.json, tiles/{key}.glb and the external tilesets
+    /// tiles/{key}.json, as served by `serve`; the last level written has no children.
+    Tiles {
+        #[command(flatten)]
+        planet: PlanetArgs,
+        /// Output directory.
+        #[arg(long, default_value = "tiles")]
+        out: PathBuf,
+        /// Levels to write: level 0 has 8 tiles, each further level four times as many.
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=9))]
+        levels: u8,
+    },
     /// Time planet builds and print a table (base mesh + continents + rivers).
     Bench {
         /// Directory with the Earth maps.
@@ -308,6 +320,16 @@ fn run_view(
     Ok(())
 }
 
+fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8) -> Result<(), String> {
+    let spec = planet.spec().map_err(|e| e.to_string())?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
+    let tiles = riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone())
+        .map_err(|e| e.to_string())?;
+    let stats = tiles.write_files(out, levels).map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
+    println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
@@ -330,6 +352,13 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Command::Tiles { planet, out, levels } => match run_tiles(&planet, &out, levels) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(2)
+            }
+        },
         Command::Serve(args) => match run_serve(args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

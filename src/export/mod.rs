@@ -11,6 +11,7 @@ pub mod geojson;
 pub mod glb;
 pub mod preview;
 pub mod raster;
+pub mod tiles;
 pub mod view;
 
 pub use climate::{climate_colour, climate_texture, water_colour};

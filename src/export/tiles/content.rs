@@ -1,0 +1,146 @@
+//! A tile's content: the planet inside the tile's cell, refined to a uniform bisection depth
+//! along the tree (`tree.rs`), with skirts along the cell's border and the water surface, as a
+//! `.glb` whose positions are `f32` offsets from the tile's origin (the centre of its box).
+//!
+//! Two tiles of one level refine their common border edge by the same tree nodes, so they share
+//! its vertices bit for bit; between levels, the skirts — walls hanging from the border towards
+//! the planet's centre — hide the gaps.
+
+use super::bounds::{local_axes, OrientedBox};
+use super::key::TileKey;
+use super::tree::{Refiner, ROOTS};
+use crate::export::glb::{encode_glb, terrain_mesh, to_gltf_axes, GlbMesh};
+use crate::export::view::water_mesh;
+use crate::mesh::terrain::lift;
+use crate::mesh::{Face, FaceKind, Mesh, NONE};
+use crate::params::Params;
+use glam::{DQuat, DVec3};
+use std::collections::{HashMap, HashSet};
+
+/// How a level's content is made: bisections from the cell to its triangles, skirt length and
+/// the pad its box leaves for the levels below.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContentSpec {
+    pub content_depth: u32,
+    pub skirt_m: f64,
+    pub pad_m: f64,
+}
+
+/// A tile's content and where it sits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TileContent {
+    pub glb: Vec<u8>,
+    /// A box around the content (terrain, skirts and water) and, with its pad, the content of
+    /// the levels below, along the cell's axes (see [`cell_frame`]).
+    pub bounds: OrientedBox,
+    /// The terrain surface: planet-frame vertex positions and triangles (without skirts).
+    pub surface: Mesh,
+    /// How many splits below the base mesh the content needed.
+    pub splits: usize,
+}
+
+impl TileContent {
+    /// The point the `.glb` positions are relative to.
+    pub fn origin(&self) -> DVec3 {
+        self.bounds.centre
+    }
+}
+
+/// The cell of `key` — its tree node (vertices of `refiner`'s mesh) — and its box axes: east,
+/// north and up at the root cell's centre, carried down cell by cell with the rotation that
+/// takes each parent's up to its child's (so a child's axes differ from its parent's only by
+/// the small tilt between their centres, even near the poles).
+pub fn cell_frame(refiner: &mut Refiner, key: TileKey) -> ([u32; 3], [DVec3; 3]) {
+    let centre = |r: &Refiner, node: [u32; 3]| node.iter().map(|&v| r.mesh().pos(v)).sum::<DVec3>().normalize();
+    let mut node = ROOTS[key.root as usize];
+    let mut axes = local_axes(centre(refiner, node));
+    for q in key.quadrants() {
+        let half = refiner.children(node)[usize::from(q >> 1)];
+        node = refiner.children(half)[usize::from(q & 1)];
+        let turn = DQuat::from_rotation_arc(axes[2], centre(refiner, node));
+        axes = axes.map(|a| (turn * a).normalize());
+    }
+    (node, axes)
+}
+
+/// The content of `key`.
+pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, params: &Params) -> TileContent {
+    let (cell, axes) = cell_frame(refiner, key);
+    let mut leaves = Vec::with_capacity(1 << spec.content_depth);
+    refiner.descendants(cell, spec.content_depth, &mut leaves);
+    let surface = surface_mesh(refiner.mesh(), &leaves);
+    let border = border_edges(&surface);
+
+    let mut hull: Vec<DVec3> = Vec::with_capacity(surface.vertices.len() + border.len());
+    for v in &surface.vertices {
+        hull.push(v.p());
+        if v.submerged() {
+            hull.push(lift(v.p(), surface.radius, v.water as f64));
+        }
+    }
+    hull.extend(border.iter().map(|&(a, _)| skirt_foot(surface.vertices[a as usize].p(), spec.skirt_m)));
+    let bounds = OrientedBox::fit(hull, axes, spec.pad_m);
+
+    let origin = bounds.centre;
+    let mut terrain = terrain_mesh(&surface, params, Some(origin));
+    terrain.translation = None;
+    add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
+    let mut water = water_mesh(&surface, params, origin);
+    water.translation = None;
+    let glb = encode_glb(&[terrain, water]);
+    TileContent { glb, bounds, surface, splits: refiner.splits() }
+}
+
+/// The leaves as a mesh of their own (vertices in order of first use; faces only, no edges),
+/// enough for normals, colours and the water surface.
+fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> Mesh {
+    let mut slot: HashMap<u32, u32> = HashMap::with_capacity(leaves.len());
+    let mut out = Mesh { radius: mesh.radius, ..Mesh::default() };
+    for leaf in leaves {
+        let v = leaf.map(|v| {
+            *slot.entry(v).or_insert_with(|| {
+                out.vertices.push(mesh.vertices[v as usize]);
+                out.vertices.len() as u32 - 1
+            })
+        });
+        out.faces.push(Face { v, e: [NONE; 3], kind: FaceKind::Sea, _pad: [0; 3] });
+    }
+    out
+}
+
+/// The border: directed edges `(a, b)` of faces (counter-clockwise) whose reverse no face has,
+/// in face order.
+pub(super) fn border_edges(surface: &Mesh) -> Vec<(u32, u32)> {
+    let directed: HashSet<(u32, u32)> =
+        surface.faces.iter().flat_map(|f| [0, 1, 2].map(|i| (f.v[i], f.v[(i + 1) % 3]))).collect();
+    surface
+        .faces
+        .iter()
+        .flat_map(|f| [0, 1, 2].map(|i| (f.v[i], f.v[(i + 1) % 3])))
+        .filter(|&(a, b)| !directed.contains(&(b, a)))
+        .collect()
+}
+
+/// Where the skirt below `p` ends: `skirt_m` towards the planet's centre.
+fn skirt_foot(p: DVec3, skirt_m: f64) -> DVec3 {
+    p - p.normalize() * skirt_m
+}
+
+/// Appends a skirt below every border edge: a wall from the edge down to its feet, facing out
+/// of the tile, with the colours and normals of the edge's vertices.
+fn add_skirts(terrain: &mut GlbMesh, surface: &Mesh, border: &[(u32, u32)], origin: DVec3, skirt_m: f64) {
+    let mut foot: HashMap<u32, u32> = HashMap::with_capacity(border.len());
+    let mut foot_of = |t: &mut GlbMesh, v: u32| {
+        *foot.entry(v).or_insert_with(|| {
+            let p = skirt_foot(surface.vertices[v as usize].p(), skirt_m) - origin;
+            t.positions.push(to_gltf_axes(p.to_array()).map(|x| x as f32));
+            t.normals.push(t.normals[v as usize]);
+            t.colors.push(t.colors[v as usize]);
+            t.positions.len() as u32 - 1
+        })
+    };
+    for &(a, b) in border {
+        let (fa, fb) = (foot_of(terrain, a), foot_of(terrain, b));
+        terrain.indices.extend_from_slice(&[a, fa, fb, a, fb, b]);
+    }
+}

@@ -1,0 +1,203 @@
+//! 3D Tiles 1.1 streaming of a planet: a tile hierarchy over the newest-vertex bisection tree
+//! of the planet's mesh, each tile's content a `.glb` refined inside its cell with the same
+//! reproducible split rule as view adaption (so a vertex is the same at every level of detail
+//! and in every view), and tileset JSON files that list it.
+//!
+//! - **Cells.** The eight octahedron faces are the level-0 cells; a cell's four children are its
+//!   grandchildren in the bisection tree (two bisections halve its edges), named by quadrant
+//!   digits (`key.rs`).
+//! - **Content.** A level-`L` tile holds its cell refined `CONTENT_DEPTH` bisections deeper:
+//!   4,096 triangles whose edges are about [`PlanetTiles::edge_length`] long, the edge length
+//!   of the octahedron divided by `2^(L+6)`. Base-mesh vertices come from the base mesh; deeper
+//!   ones are made by the adaption's split (`tree.rs`, `content.rs`).
+//! - **Geometric error** is that nominal edge length, halving per level: at a screen-space error
+//!   of 16 px, a tile is replaced by its children when its edges would span more than 16 px.
+//! - **Skirts** hang from each tile's border towards the planet's centre, one geometric error
+//!   long — more than the height by which a coarser neighbour's border can differ.
+//! - **Bounding volumes** are boxes around the content along axes carried down from east,
+//!   north and up at the root cell's centre (`content.rs`), grown by 1.5 edge lengths for what
+//!   finer levels add and by room for the tilt between parent and child, so children's boxes
+//!   lie inside their parent's; one that would not is replaced by one along the parent's axes,
+//!   cut to it (`bounds.rs`). The contentless root's box is axis-aligned around level 0's.
+//! - **Frames.** Positions are planet-centred metres (+Z north, longitude 0 on +X), which 3D
+//!   Tiles reads as the frame of a sphere declared by `3DTILES_ellipsoid` (radius: sea level).
+//!   Each tile's `.glb` holds `f32` offsets from the tile's origin in glTF's Y-up axes; the
+//!   tile's `transform` is the translation to that origin relative to its parent's, and 3D Tiles'
+//!   Y-up to Z-up rotation of glTF content undoes `to_gltf_axes`.
+//! - **Files** (`tileset.rs`): `tileset.json` lists the root and level 0; levels 1, 3, 5, ...
+//!   start external tilesets `tiles/{key}.json` of two levels each; contents are
+//!   `tiles/{key}.glb`.
+
+mod bounds;
+mod content;
+mod files;
+mod key;
+mod tileset;
+mod tree;
+
+pub use bounds::{local_axes, OrientedBox};
+pub use content::{ContentSpec, TileContent};
+pub use files::WriteStats;
+pub use key::{KeyError, TileFile, TileKey};
+pub use tileset::{is_subtree_root, TilesetFile};
+pub use tree::{BaseTree, NotBisected, Refiner};
+
+use crate::build::Planet;
+use crate::params::Params;
+use glam::DVec3;
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// Bisections between a tile's cell and the triangles of its content (4,096 per tile).
+pub const CONTENT_DEPTH: u32 = 12;
+/// Deepest level any planet serves.
+pub const MAX_LEVEL: u8 = 20;
+/// Box pad for the levels below, in edge lengths of the tile's level.
+const PAD_EDGES: f64 = 1.5;
+/// Most placements remembered before the memory is cleared.
+const MAX_PLACEMENTS: usize = 1 << 17;
+
+/// Where a tile sits: the origin of its `.glb` positions and its (nested) bounding box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    pub origin: DVec3,
+    pub bounds: OrientedBox,
+}
+
+/// A planet prepared for tiling: its mesh, the bisection tree behind it, and the placements
+/// of the tiles made so far (each depends on its parent's).
+pub struct PlanetTiles {
+    planet: Arc<Planet>,
+    params: Params,
+    tree: BaseTree,
+    max_level: u8,
+    placements: Mutex<HashMap<TileKey, Placement>>,
+    planet_bounds: OnceLock<OrientedBox>,
+}
+
+impl PlanetTiles {
+    pub fn new(planet: Arc<Planet>, params: Params) -> Result<PlanetTiles, NotBisected> {
+        let tree = BaseTree::new(&planet.mesh)?;
+        let octant_edge = std::f64::consts::FRAC_PI_2 * params.radius_m;
+        // Deepest level whose edges stay at least the minimum edge length of adaption.
+        let max_level = (0..=MAX_LEVEL)
+            .take_while(|&l| {
+                octant_edge / 2f64.powi(i32::from(l) + CONTENT_DEPTH as i32 / 2) >= params.min_edge_length_m
+            })
+            .last()
+            .unwrap_or(0);
+        let placements = Mutex::new(HashMap::new());
+        Ok(PlanetTiles { planet, params, tree, max_level, placements, planet_bounds: OnceLock::new() })
+    }
+
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// The deepest level: [`MAX_LEVEL`], or less where edges would get shorter than
+    /// `min_edge_length_m`.
+    pub fn max_level(&self) -> u8 {
+        self.max_level
+    }
+
+    /// Nominal edge length of level-`level` content: the octahedron's edge (a quarter of a
+    /// great circle) over `2^(level + CONTENT_DEPTH / 2)`.
+    pub fn edge_length(&self, level: u8) -> f64 {
+        std::f64::consts::FRAC_PI_2 * self.params.radius_m / 2f64.powi(i32::from(level) + CONTENT_DEPTH as i32 / 2)
+    }
+
+    /// Geometric error of a level, metres: its nominal edge length.
+    pub fn geometric_error(&self, level: u8) -> f64 {
+        self.edge_length(level)
+    }
+
+    /// The pad of a level's boxes: [`PAD_EDGES`] edge lengths for what finer levels add, plus
+    /// room for a child's box to tilt against its parent's (at most about `s²/6R` for cells of
+    /// edge `s` on a sphere of radius `R`).
+    fn spec(&self, level: u8) -> ContentSpec {
+        let cell_edge = self.edge_length(level) * 2f64.powi(CONTENT_DEPTH as i32 / 2);
+        ContentSpec {
+            content_depth: CONTENT_DEPTH,
+            skirt_m: self.geometric_error(level),
+            pad_m: PAD_EDGES * self.edge_length(level) + cell_edge * cell_edge / (4.0 * self.params.radius_m),
+        }
+    }
+
+    /// Makes the content of `key` without placing it.
+    fn make(&self, key: TileKey) -> TileContent {
+        assert!(key.level <= self.max_level, "tile {key} is deeper than level {}", self.max_level);
+        let mut refiner = Refiner::new(&self.planet.mesh, &self.tree, &self.params);
+        content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params)
+    }
+
+    /// The content of tile `key`, which must be at most [`PlanetTiles::max_level`] deep.
+    pub fn content(&self, key: TileKey) -> TileContent {
+        let content = self.make(key);
+        self.remember(key, &content);
+        content
+    }
+
+    /// The box of the contentless root around the whole planet: axis-aligned around the boxes
+    /// of the level-0 tiles.
+    pub fn planet_bounds(&self) -> OrientedBox {
+        *self.planet_bounds.get_or_init(|| {
+            let roots: Vec<OrientedBox> = (0..8).into_par_iter().map(|r| self.make(TileKey::root(r)).bounds).collect();
+            OrientedBox::fit(roots.iter().flat_map(|b| b.corners()), [DVec3::X, DVec3::Y, DVec3::Z], 0.0)
+        })
+    }
+
+    /// Where tile `key` sits, making its content (and its ancestors') if not known yet.
+    pub fn placement(&self, key: TileKey) -> Placement {
+        if let Some(p) = self.placements.lock().expect("placements lock").get(&key) {
+            return *p;
+        }
+        self.content(key);
+        self.placements.lock().expect("placements lock").get(&key).copied().unwrap_or_else(|| {
+            // Forgotten at once by a full memory: place it again from its content.
+            let content = self.content(key);
+            Placement { origin: content.origin(), bounds: content.bounds.nested_in(&self.parent_bounds(key)) }
+        })
+    }
+
+    /// Makes the placements of `keys` (parents before children), their contents in parallel;
+    /// returns the contents made on the way, as `(key, glb)`.
+    pub fn place_all(&self, keys: &[TileKey]) -> Vec<(TileKey, Vec<u8>)> {
+        let mut made = Vec::new();
+        let mut by_level: Vec<TileKey> = keys.to_vec();
+        by_level.sort_by_key(|k| (k.level, *k));
+        for group in by_level.chunk_by(|a, b| a.level == b.level) {
+            let known = self.placements.lock().expect("placements lock");
+            let todo: Vec<TileKey> = group.iter().copied().filter(|k| !known.contains_key(k)).collect();
+            drop(known);
+            for key in &todo {
+                if let Some(parent) = key.parent() {
+                    self.placement(parent);
+                }
+            }
+            let contents: Vec<(TileKey, Vec<u8>)> = todo.par_iter().map(|&k| (k, self.content(k).glb)).collect();
+            made.extend(contents);
+        }
+        made
+    }
+
+    /// Records the placement of a content just made (its parent's placement is made first).
+    fn remember(&self, key: TileKey, content: &TileContent) {
+        let bounds = content.bounds.nested_in(&self.parent_bounds(key));
+        let mut memo = self.placements.lock().expect("placements lock");
+        if memo.len() >= MAX_PLACEMENTS {
+            memo.clear();
+        }
+        memo.insert(key, Placement { origin: content.origin(), bounds });
+    }
+
+    fn parent_bounds(&self, key: TileKey) -> OrientedBox {
+        match key.parent() {
+            Some(parent) => self.placement(parent).bounds,
+            None => self.planet_bounds(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,296 @@
+use super::*;
+use crate::export::test_planet;
+use serde_json::Value;
+use std::collections::HashSet;
+use std::sync::OnceLock;
+
+/// The shared test planet, tiled once.
+fn tiles() -> &'static PlanetTiles {
+    static TILES: OnceLock<PlanetTiles> = OnceLock::new();
+    TILES.get_or_init(|| {
+        let params = Params { base_faces: 2000, ..Params::default() };
+        PlanetTiles::new(Arc::new(test_planet().clone()), params).expect("the base mesh is a bisection refinement")
+    })
+}
+
+/// `(JSON chunk, BIN chunk)` of a `.glb`.
+fn glb_chunks(glb: &[u8]) -> (Value, &[u8]) {
+    let u32_at = |at: usize| u32::from_le_bytes(glb[at..at + 4].try_into().unwrap()) as usize;
+    let json_len = u32_at(12);
+    let json = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    (json, &glb[20 + json_len + 8..])
+}
+
+/// Positions of the first mesh of a `.glb` (glTF axes).
+fn glb_positions(glb: &[u8]) -> Vec<DVec3> {
+    let (json, bin) = glb_chunks(glb);
+    let acc =
+        &json["accessors"][json["meshes"][0]["primitives"][0]["attributes"]["POSITION"].as_u64().unwrap() as usize];
+    let view = &json["bufferViews"][acc["bufferView"].as_u64().unwrap() as usize];
+    let start = view["byteOffset"].as_u64().unwrap_or(0) as usize;
+    let floats: Vec<f64> = bin[start..start + 12 * acc["count"].as_u64().unwrap() as usize]
+        .chunks(4)
+        .map(|c| f32::from_le_bytes(c.try_into().unwrap()) as f64)
+        .collect();
+    floats.chunks(3).map(|c| DVec3::new(c[0], c[1], c[2])).collect()
+}
+
+/// 3D Tiles turns glTF's Y-up content Z-up: `(x, y, z) -> (x, -z, y)`.
+fn y_up_to_z_up(p: DVec3) -> DVec3 {
+    DVec3::new(p.x, -p.z, p.y)
+}
+
+fn translation_of(tile: &Value) -> DVec3 {
+    tile.get("transform").map_or(DVec3::ZERO, |t| {
+        let m: Vec<f64> = t.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        assert_eq!(m.len(), 16);
+        let identity = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+        assert_eq!(&m[..12], &identity, "transforms are translations");
+        assert_eq!(m[15], 1.0);
+        DVec3::new(m[12], m[13], m[14])
+    })
+}
+
+fn box_of(tile: &Value, origin: DVec3) -> OrientedBox {
+    let b: Vec<f64> = tile["boundingVolume"]["box"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    OrientedBox::from_tiles_box(&b.try_into().unwrap(), origin)
+}
+
+#[test]
+fn the_base_tree_holds_every_base_split() {
+    let t = tiles();
+    let mesh = &test_planet().mesh;
+    assert_eq!(t.tree.splits(), mesh.vertices.len() - 6);
+    // Walking the tree above the base mesh's leaves makes no vertex.
+    let mut r = Refiner::new(mesh, &t.tree, &t.params);
+    let mut out = Vec::new();
+    r.descendants(tree::ROOTS[0], 4, &mut out);
+    assert_eq!((out.len(), r.splits()), (16, 0));
+}
+
+#[test]
+fn level_zero_closes_the_sphere_without_cracks() {
+    // Every border edge of every level-0 tile is the reverse of another tile's border edge,
+    // with bit-identical end points: the eight tiles close the sphere.
+    let t = tiles();
+    let mut edges: Vec<([u64; 3], [u64; 3])> = Vec::new();
+    for root in 0..8 {
+        let c = t.content(TileKey::root(root));
+        assert_eq!(c.surface.faces.len(), 1 << CONTENT_DEPTH);
+        let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
+        edges.extend(content::border_edges(&c.surface).iter().map(|&(a, b)| (bits(a), bits(b))));
+    }
+    let set: HashSet<_> = edges.iter().copied().collect();
+    assert!(edges.len() > 8 * 64);
+    for (a, b) in &edges {
+        assert!(set.contains(&(*b, *a)), "a border edge without its neighbour");
+    }
+}
+
+#[test]
+fn neighbouring_tiles_share_their_border_vertices() {
+    // Level 2 inside root 0: the quadrant tiles that touch share every border vertex they
+    // have in common, bit for bit, and the border edges between them match.
+    let t = tiles();
+    let keys: Vec<TileKey> = TileKey::root(0).children().iter().flat_map(|k| k.children()).collect();
+    let mut all: Vec<([u64; 3], [u64; 3])> = Vec::new();
+    for &k in &keys {
+        let c = t.content(k);
+        assert!(c.splits > 0, "level 2 is finer than the test planet's base mesh");
+        let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
+        all.extend(content::border_edges(&c.surface).iter().map(|&(a, b)| (bits(a), bits(b))));
+    }
+    let set: HashSet<_> = all.iter().copied().collect();
+    let shared = all.iter().filter(|(a, b)| set.contains(&(*b, *a))).count();
+    // The 16 tiles tile root 0: all edges but those on root 0's own border are shared.
+    let outer = content::border_edges(&t.content(TileKey::root(0)).surface).len() * 4;
+    assert_eq!(shared + outer, all.len(), "outer border edges: {outer}");
+}
+
+#[test]
+fn glb_positions_plus_transforms_give_the_mesh_positions() {
+    let t = tiles();
+    let file = t.tileset_json(1);
+    let doc: Value = serde_json::from_slice(&file.json).unwrap();
+    let level0 = &doc["root"]["children"][3];
+    let key = TileKey::root(3);
+    assert_eq!(level0["content"]["uri"], "tiles/3.glb");
+    let origin = translation_of(&doc["root"]) + translation_of(level0);
+    let content = t.content(key);
+    let positions = glb_positions(&content.glb);
+    assert!(positions.len() > content.surface.vertices.len(), "skirts add vertices");
+    for (v, q) in content.surface.vertices.iter().zip(&positions) {
+        let world = origin + y_up_to_z_up(*q);
+        // f32 offsets within a 90-degree cell: well under a metre.
+        assert!(world.distance(v.p()) < 1.0, "{world} vs {:?}", v.pos);
+    }
+    // The same through a subtree file and a level-1 tile.
+    let sub = t.subtree_json(key.child(2), 2).unwrap();
+    let sub_doc: Value = serde_json::from_slice(&sub.json).unwrap();
+    let reference = &level0["children"][2];
+    assert_eq!(reference["content"]["uri"], "tiles/32.json");
+    assert!(reference.get("children").is_none());
+    assert_eq!(reference["boundingVolume"], sub_doc["root"]["boundingVolume"]);
+    let origin1 = origin + translation_of(reference) + translation_of(&sub_doc["root"]);
+    let child = t.content(key.child(2));
+    for (v, q) in child.surface.vertices.iter().zip(glb_positions(&child.glb)) {
+        assert!((origin1 + y_up_to_z_up(q)).distance(v.p()) < 0.5);
+    }
+}
+
+/// Walks a tileset file: checks each tile's fields, geometric errors falling with depth,
+/// children's boxes inside their parent's, each content inside its box, and returns the URIs.
+fn check_tiles(
+    t: &PlanetTiles,
+    tile: &Value,
+    origin: DVec3,
+    parent: Option<(&OrientedBox, f64)>,
+    uris: &mut Vec<String>,
+) {
+    let origin = origin + translation_of(tile);
+    let b = box_of(tile, origin);
+    let ge = tile["geometricError"].as_f64().unwrap();
+    if let Some((pb, pge)) = parent {
+        assert!(ge < pge, "geometric error {ge} not below the parent's {pge}");
+        assert!(pb.contains_box(&b, 1e-3), "a child's box sticks out of its parent's");
+    }
+    if let Some(uri) = tile["content"]["uri"].as_str() {
+        uris.push(uri.to_string());
+        if let Some(name) = uri.strip_suffix(".glb") {
+            let key = TileKey::parse(name.trim_start_matches("tiles/"), t.max_level()).unwrap();
+            let c = t.content(key);
+            for v in &c.surface.vertices {
+                assert!(b.contains(v.p(), 1e-3), "tile {key}: a vertex outside its box");
+                if let Some((pb, _)) = parent {
+                    assert!(pb.contains(v.p(), 1e-3), "tile {key}: a vertex outside its parent's box");
+                }
+            }
+        }
+    }
+    for child in tile["children"].as_array().into_iter().flatten() {
+        check_tiles(t, child, origin, Some((&b, ge)), uris);
+    }
+}
+
+#[test]
+fn tileset_files_are_well_formed_and_nested() {
+    let t = tiles();
+    let top: Value = serde_json::from_slice(&t.tileset_json(t.max_level()).json).unwrap();
+    assert_eq!(top["asset"]["version"], "1.1");
+    assert_eq!(top["extensionsUsed"][0], "3DTILES_ellipsoid");
+    let r = top["extensions"]["3DTILES_ellipsoid"]["radii"][0].as_f64().unwrap();
+    assert_eq!(r, t.params.radius_m + t.params.sea_level_m);
+    assert_eq!(top["root"]["refine"], "REPLACE");
+    assert!(top["geometricError"].as_f64().unwrap() >= top["root"]["geometricError"].as_f64().unwrap());
+    let mut uris = Vec::new();
+    check_tiles(t, &top["root"], DVec3::ZERO, None, &mut uris);
+    assert_eq!(uris.len(), 8 + 32);
+    // Every URI names a file the tiles serve, and one subtree file is checked the same way.
+    for uri in &uris {
+        let file = TileFile::parse(uri.strip_prefix("tiles/").unwrap(), t.max_level()).unwrap();
+        if let TileFile::Subtree(k) = file {
+            assert!(is_subtree_root(k.level));
+        }
+    }
+    let key = TileKey::root(5).child(1);
+    let reference = &top["root"]["children"][5]["children"][1];
+    let origin = translation_of(&top["root"]["children"][5]) + translation_of(reference);
+    let sub: Value = serde_json::from_slice(&t.subtree_json(key, t.max_level()).unwrap().json).unwrap();
+    assert_eq!(sub["root"]["refine"], "REPLACE");
+    assert_eq!(sub["geometricError"], reference["geometricError"]);
+    let mut sub_uris = Vec::new();
+    let parent_box = box_of(&top["root"]["children"][5], translation_of(&top["root"]["children"][5]));
+    let parent_ge = top["root"]["children"][5]["geometricError"].as_f64().unwrap();
+    check_tiles(t, &sub["root"], origin, Some((&parent_box, parent_ge)), &mut sub_uris);
+    assert_eq!(sub_uris.len(), 1 + 4 + 16);
+    assert_eq!(sub_uris[0], "51.glb");
+    assert!(sub_uris.iter().all(|u| u.starts_with("51") && TileFile::parse(u, t.max_level()).is_ok()));
+    assert!(t.subtree_json(TileKey::root(5).child(1).child(0), 20).is_none(), "level 2 starts no file");
+}
+
+#[test]
+fn contents_and_files_are_deterministic() {
+    let a = tiles();
+    let b = PlanetTiles::new(Arc::new(test_planet().clone()), a.params.clone()).unwrap();
+    let key = TileKey::root(6).child(3).child(1);
+    assert_eq!(a.content(key).glb, b.content(key).glb);
+    // Files do not depend on what was made before.
+    let sub = TileKey::root(6).child(3);
+    assert_eq!(a.subtree_json(sub, 4).unwrap().json, b.subtree_json(sub, 4).unwrap().json);
+}
+
+#[test]
+fn tile_vertices_are_the_vertices_of_a_view() {
+    use crate::adapt::{Adapter, Camera};
+    let t = tiles();
+    let key = TileKey::root(0).child(1).child(2).child(0);
+    let c = t.content(key);
+    let r = t.params.radius_m;
+    let top = c.surface.vertices.iter().map(|v| v.p().length()).fold(r, f64::max);
+    let eye = c.bounds.centre.normalize() * (top + 30_000.0);
+    let cam = Camera::new(eye, c.bounds.centre, None, 60.0, 640, 360, 4.0, 20.0, r).unwrap();
+    let mut adapter = Adapter::new(test_planet().mesh.clone(), t.params.clone());
+    adapter.adapt(&cam, Some(400_000));
+    let view: HashSet<[u64; 3]> = adapter.mesh().vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
+    // Below the eye the view is much finer than the tile: every tile vertex there is a view
+    // vertex, bit for bit.
+    let near: Vec<_> =
+        c.surface.vertices.iter().filter(|v| v.p().normalize().distance(eye.normalize()) * r < 60_000.0).collect();
+    let found = near.iter().filter(|v| view.contains(&v.pos.map(f64::to_bits))).count();
+    assert!(near.len() > 10, "{}", near.len());
+    assert_eq!(found, near.len());
+}
+
+#[test]
+fn skirts_hang_below_the_border() {
+    let t = tiles();
+    let key = TileKey::root(2).child(0);
+    let c = t.content(key);
+    let border = content::border_edges(&c.surface);
+    let positions = glb_positions(&c.glb);
+    let n = c.surface.vertices.len();
+    let feet = positions.len() - n;
+    let border_vertices: HashSet<u32> = border.iter().map(|e| e.0).collect();
+    assert_eq!(feet, border_vertices.len());
+    let origin = c.origin();
+    let skirt = t.geometric_error(key.level);
+    for foot in &positions[n..] {
+        let p = origin + y_up_to_z_up(*foot);
+        let top =
+            c.surface.vertices.iter().map(|v| v.p()).min_by(|a, b| a.distance(p).total_cmp(&b.distance(p))).unwrap();
+        assert!((top.length() - p.length() - skirt).abs() < 1.0, "a skirt foot not {skirt} m below its vertex");
+    }
+}
+
+#[test]
+fn deep_tiles_stay_small_and_precise() {
+    let t = tiles();
+    let mut key = TileKey::root(4);
+    for q in [1, 3, 0, 2, 2, 1, 3, 0, 1, 1, 2, 0] {
+        key = key.child(q);
+    }
+    let c = t.content(key);
+    assert_eq!(c.surface.faces.len(), 1 << CONTENT_DEPTH);
+    let e = t.edge_length(key.level);
+    let max_half = c.bounds.half.iter().copied().fold(0.0, f64::max);
+    assert!(max_half < 200.0 * e, "box half-size {max_half} for edges of {e}");
+    // Sub-millimetre f32 offsets.
+    for (v, q) in c.surface.vertices.iter().zip(glb_positions(&c.glb)) {
+        assert!((c.origin() + y_up_to_z_up(q)).distance(v.p()) < 1e-3);
+    }
+}
+
+#[test]
+fn boxes_nest_without_falling_back_to_their_parents_axes() {
+    // The pads leave room for the tilt between parent and child: every box down to level 3
+    // of one root cell keeps its own axes and its own fit.
+    let t = tiles();
+    let mut level = vec![TileKey::root(1)];
+    for _ in 0..4 {
+        for &k in &level {
+            let own = t.content(k).bounds;
+            assert_eq!(t.placement(k).bounds, own, "tile {k} fell back to its parent's axes");
+        }
+        level = level.iter().flat_map(|k| k.children()).collect();
+    }
+}

@@ -1,0 +1,159 @@
+//! The newest-vertex bisection tree behind a planet's mesh, and refinement along it.
+//!
+//! Every mesh of a planet — the base mesh, a view, a tile — is a cut through one binary tree:
+//! the eight octahedron faces are its roots and each node `(v0, v1, v2)` (counter-clockwise,
+//! `v0` newest) has the two children `(m, v0, v1)` and `(m, v2, v0)`, where `m` is the vertex
+//! made by splitting the node's refinement edge `(v1, v2)`. [`BaseTree`] recovers which edges
+//! the base mesh split (and into which vertex) by coarsening a copy of it back to the
+//! octahedron; [`Refiner`] walks the tree below any node, splitting base-mesh leaves with the
+//! adaption's split rule ([`split_vertex`]) on a copy of the base mesh made on the first split.
+//! The same node therefore always gets the same vertices, bit for bit, as in a view.
+
+use crate::mesh::altitude::split_vertex;
+use crate::mesh::{Mesh, SplitSite};
+use crate::params::Params;
+use std::collections::HashMap;
+
+/// The eight roots: the octahedron's faces as `octahedron()` makes them (vertices 0..4 on the
+/// equator, 4 the north pole, 5 the south pole), newest vertex first.
+pub const ROOTS: [[u32; 3]; 8] =
+    [[4, 0, 1], [5, 1, 0], [4, 1, 2], [5, 2, 1], [4, 2, 3], [5, 3, 2], [4, 3, 0], [5, 0, 3]];
+
+/// Key of an unordered vertex pair.
+#[inline]
+fn pair(a: u32, b: u32) -> u64 {
+    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+    (u64::from(lo) << 32) | u64::from(hi)
+}
+
+/// Why a mesh is not a bisection refinement of the octahedron.
+#[derive(Debug, thiserror::Error)]
+#[error("the mesh does not coarsen to the octahedron ({faces} faces remain)")]
+pub struct NotBisected {
+    pub faces: usize,
+}
+
+/// Which edges of the tree the base mesh has split, and the base mesh's unsplit edges.
+#[derive(Clone, Debug, Default)]
+pub struct BaseTree {
+    /// The vertex made by splitting each split edge, by the edge's ends.
+    midpoints: HashMap<u64, u32>,
+    /// The base mesh's edges, by their ends.
+    edges: HashMap<u64, u32>,
+}
+
+impl BaseTree {
+    /// Recovers the tree from a base mesh by collapsing, pass after pass, every vertex whose
+    /// four faces are still those of its split, until only the octahedron is left.
+    pub fn new(base: &Mesh) -> Result<BaseTree, NotBisected> {
+        let mut mesh = base.clone();
+        for v in mesh.vertices.iter_mut().skip(6) {
+            v.level = 1; // let every vertex but the octahedron's collapse
+        }
+        let mut midpoints = HashMap::with_capacity(mesh.vertices.len());
+        let mut alive: Vec<u32> = (6..mesh.vertices.len() as u32).collect();
+        loop {
+            let sites: Vec<_> = alive.iter().filter_map(|&v| mesh.collapse_site(v)).collect();
+            if sites.is_empty() {
+                break;
+            }
+            for site in &sites {
+                midpoints.insert(pair(site.a, site.b), site.v);
+                mesh.collapse_vertex(site);
+            }
+            alive.retain(|&v| !collapsed(&mesh, v));
+        }
+        let faces = base.faces.len() - 2 * midpoints.len();
+        if faces != 8 || midpoints.len() + 6 != base.vertices.len() {
+            return Err(NotBisected { faces });
+        }
+        let edges = base.edges.iter().enumerate().map(|(i, e)| (pair(e.v[0], e.v[1]), i as u32)).collect();
+        Ok(BaseTree { midpoints, edges })
+    }
+
+    /// How many splits the base mesh holds.
+    pub fn splits(&self) -> usize {
+        self.midpoints.len()
+    }
+}
+
+/// Whether vertex `v` has been collapsed (a collapse marks its edge link dead, `NONE - 1`).
+fn collapsed(mesh: &Mesh, v: u32) -> bool {
+    mesh.vertices[v as usize].edge >= crate::mesh::NONE - 1
+}
+
+/// Refines along the tree below the base mesh: copy-on-write, so walks that stay above the base
+/// mesh's leaves cost no copy.
+pub struct Refiner<'a> {
+    base: &'a Mesh,
+    tree: &'a BaseTree,
+    params: &'a Params,
+    /// The base mesh with this refiner's splits, made on the first split.
+    refined: Option<Mesh>,
+    midpoints: HashMap<u64, u32>,
+    edges: HashMap<u64, u32>,
+}
+
+impl<'a> Refiner<'a> {
+    pub fn new(base: &'a Mesh, tree: &'a BaseTree, params: &'a Params) -> Refiner<'a> {
+        Refiner { base, tree, params, refined: None, midpoints: HashMap::new(), edges: HashMap::new() }
+    }
+
+    /// The mesh the node vertices index: the base mesh plus the splits made so far.
+    pub fn mesh(&self) -> &Mesh {
+        self.refined.as_ref().unwrap_or(self.base)
+    }
+
+    /// Splits made so far.
+    pub fn splits(&self) -> usize {
+        self.midpoints.len()
+    }
+
+    /// The vertex that splits edge `(a, b)` of the tree, splitting it (with its bisection
+    /// closure) if no split has yet.
+    pub fn midpoint(&mut self, a: u32, b: u32) -> u32 {
+        let key = pair(a, b);
+        if let Some(&m) = self.tree.midpoints.get(&key).or_else(|| self.midpoints.get(&key)) {
+            return m;
+        }
+        let e = *self
+            .edges
+            .get(&key)
+            .or_else(|| self.tree.edges.get(&key))
+            .expect("an unsplit edge of the tree is an edge of the mesh");
+        let params = self.params;
+        let mesh = self.refined.get_or_insert_with(|| self.base.clone());
+        let mut sites: Vec<SplitSite> = Vec::new();
+        let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
+            sites.push(*site);
+            split_vertex(m, site, params)
+        });
+        for (site, split) in sites.iter().zip(&splits) {
+            let m = split.v;
+            self.midpoints.insert(pair(site.a, site.b), m);
+            let [e1, e2, e3, e4] = split.e;
+            for (x, y, edge) in [(site.a, m, e1), (m, site.t, e2), (m, site.b, e3), (m, site.d, e4)] {
+                self.edges.insert(pair(x, y), edge);
+            }
+        }
+        self.midpoints[&key]
+    }
+
+    /// The two children of `node`.
+    pub fn children(&mut self, node: [u32; 3]) -> [[u32; 3]; 2] {
+        let [v0, v1, v2] = node;
+        let m = self.midpoint(v1, v2);
+        [[m, v0, v1], [m, v2, v0]]
+    }
+
+    /// The descendants of `node` `depth` bisections below it, in tree order.
+    pub fn descendants(&mut self, node: [u32; 3], depth: u32, out: &mut Vec<[u32; 3]>) {
+        if depth == 0 {
+            out.push(node);
+            return;
+        }
+        for child in self.children(node) {
+            self.descendants(child, depth - 1, out);
+        }
+    }
+}
