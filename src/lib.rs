@@ -11,5 +11,6 @@ pub mod generate;
 pub mod maps;
 pub mod mesh;
 pub mod params;
+pub mod render;
 pub mod rng;
 pub mod server;

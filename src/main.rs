@@ -80,6 +80,25 @@ enum Command {
         #[arg(long)]
         stats: bool,
     },
+    /// Adapt the planet to a camera and draw it with wgpu: climate-coloured terrain, water,
+    /// sun light, haze and sky. The image size is the camera's width and height.
+    Render {
+        #[command(flatten)]
+        planet: PlanetArgs,
+        /// Camera query as for `view`, plus [&sun=X,Y,Z] (direction towards the sun, planet frame;
+        /// default: over the viewer's shoulder).
+        #[arg(long, allow_hyphen_values = true)]
+        camera: String,
+        /// Face budget of the adapted mesh.
+        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+        max_faces: u64,
+        /// Image format [default: from the --out extension, else png].
+        #[arg(long, value_parser = parse_format)]
+        format: Option<riverworld::render::ImageFormat>,
+        /// Output file.
+        #[arg(long, default_value = "render.png")]
+        out: PathBuf,
+    },
     /// Serve planets over HTTP (see openapi.yaml); without options, the built-in planet `earth`
     /// on 127.0.0.1:8080 with inputs stored under ./data.
     Serve(ServeArgs),
@@ -211,6 +230,9 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
     })
 }
 
+fn parse_format(s: &str) -> Result<riverworld::render::ImageFormat, String> {
+    s.parse()
+}
 fn parse_kind(s: &str) -> Result<MapKind, String> {
     s.parse().map_err(|e: riverworld::maps::MapError| e.to_string())
 }
@@ -320,6 +342,34 @@ fn run_view(
     Ok(())
 }
 
+fn run_render(
+    planet: &PlanetArgs,
+    camera: &str,
+    max_faces: usize,
+    format: Option<riverworld::render::ImageFormat>,
+    out: &std::path::Path,
+) -> Result<(), String> {
+    use riverworld::render::{self, ImageFormat, Shot};
+    let spec = planet.spec().map_err(|e| e.to_string())?;
+    let (shot, rest) = Shot::parse_query(camera, spec.params.radius_m).map_err(|e| e.to_string())?;
+    if let Some((k, _)) = rest.first() {
+        return Err(format!("unknown camera parameter {k:?}"));
+    }
+    let format = format.unwrap_or_else(|| match out.extension().and_then(|e| e.to_str()) {
+        Some(e) if e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg") => ImageFormat::Jpeg,
+        _ => ImageFormat::Png,
+    });
+    let renderer = render::shared().map_err(|e| e.to_string())?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
+    let pixels = render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces).map_err(|e| e.to_string())?;
+    let bytes = render::encode(&pixels, shot.camera.width, shot.camera.height, format);
+    generate::write_outputs(
+        out.parent().unwrap_or(std::path::Path::new(".")),
+        &[(out.file_name().and_then(|n| n.to_str()).unwrap_or("render.png"), bytes)],
+    )
+    .map_err(|e| e.to_string())
+}
+
 fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8) -> Result<(), String> {
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
@@ -343,6 +393,15 @@ fn main() -> ExitCode {
                 }
             }
         },
+        Command::Render { planet, camera, max_faces, format, out } => {
+            match run_render(&planet, &camera, max_faces as usize, format, &out) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
         Command::View { planet, cameras, max_faces, out, stats } => {
             match run_view(&planet, &cameras, max_faces, &out, stats) {
                 Ok(()) => ExitCode::SUCCESS,

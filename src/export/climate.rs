@@ -42,7 +42,7 @@ const SHALLOW: Rgb = [120.0, 190.0, 215.0];
 const DEEP: Rgb = [10.0, 30.0, 90.0];
 
 /// Depth at which the sea reaches its darkest colour.
-const DEEPEST_M: f64 = 6000.0;
+pub const DEEPEST_M: f64 = 6000.0;
 /// Tree line altitude as a share of the snow line's.
 const TREE_SHARE: f64 = 0.75;
 /// Share of rock in the colour just below the tree line.

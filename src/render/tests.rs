@@ -1,0 +1,170 @@
+//! Snapshots of the shipped Earth map checked against the map and the mesh (needs a wgpu
+//! adapter: lavapipe in CI).
+
+use super::*;
+use crate::build::continents::direction;
+use crate::build::{build_planet, Planet, PlanetSpec};
+use crate::maps::{Map, MapKind, MapLimits};
+use crate::mesh::VertexFlags;
+use std::sync::OnceLock;
+
+fn earth() -> &'static (Planet, Params) {
+    static EARTH: OnceLock<(Planet, Params)> = OnceLock::new();
+    EARTH.get_or_init(|| {
+        let bytes =
+            std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_landmask_ne10m_1024x512.png")).unwrap();
+        let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
+        let params = Params::default();
+        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()) };
+        (build_planet(&spec, &mut |_, _| {}).unwrap(), params)
+    })
+}
+
+fn renderer() -> &'static Renderer {
+    shared().expect("a wgpu adapter (install mesa-vulkan-drivers for lavapipe)")
+}
+
+/// Pixel of a planet-frame point, if it is in front of the camera and inside the image.
+fn pixel_of(cam: &Camera, p: DVec3) -> Option<(u32, u32)> {
+    let c = scene::view_projection(cam) * (p - cam.eye).extend(1.0);
+    if c.w <= 0.0 {
+        return None;
+    }
+    let (x, y) = (c.x / c.w, c.y / c.w);
+    let px = ((x + 1.0) * 0.5 * cam.width as f64).floor();
+    let py = ((1.0 - y) * 0.5 * cam.height as f64).floor();
+    (px >= 0.0 && py >= 0.0 && px < cam.width as f64 && py < cam.height as f64).then_some((px as u32, py as u32))
+}
+
+fn rgb(img: &[u8], cam: &Camera, (x, y): (u32, u32)) -> [i32; 3] {
+    let i = ((y * cam.width + x) * 4) as usize;
+    [img[i] as i32, img[i + 1] as i32, img[i + 2] as i32]
+}
+
+fn orbit(lat: f64, lon: f64, size: u32) -> Camera {
+    let (_, params) = earth();
+    let eye = direction(lat, lon) * params.radius_m * 3.2;
+    let q = format!("eye={},{},{}&target=0,0,0&width={size}&height={size}&fov=40", eye.x, eye.y, eye.z);
+    Camera::parse_query(&q, params.radius_m).unwrap().0
+}
+
+#[test]
+fn orbit_view_shows_sea_land_and_ice_where_the_map_has_them() {
+    let (planet, params) = earth();
+    let sun = Some(DVec3::new(1.0, 0.0, 0.3));
+    let cam = orbit(5.0, 10.0, 384);
+    let shot = Shot { camera: cam.clone(), sun };
+    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000).unwrap();
+    assert_eq!(img.len(), 384 * 384 * 4);
+    let on_ground = |lat: f64, lon: f64| direction(lat, lon) * (params.radius_m + params.sea_level_m);
+    // Share of water-coloured pixels in a 9x9 window around a point (rivers seen from orbit
+    // are several pixels wide, so single pixels on land may be water).
+    let watery = |lat: f64, lon: f64| {
+        let (x, y) = pixel_of(&cam, on_ground(lat, lon)).unwrap();
+        let mut n = 0;
+        for dy in -4i32..=4 {
+            for dx in -4i32..=4 {
+                let [r, g, b] = rgb(&img, &cam, ((x as i32 + dx) as u32, (y as i32 + dy) as u32));
+                n += (b > r + 20 && b > g) as u32;
+            }
+        }
+        n as f64 / 81.0
+    };
+    // Sea (Gulf of Guinea, South Atlantic, off Senegal): blue.
+    for (lat, lon) in [(-5.0, 0.0), (-20.0, -5.0), (10.0, -30.0)] {
+        assert!(watery(lat, lon) > 0.99, "sea at {lat},{lon}: {}", watery(lat, lon));
+    }
+    // Land (Sahara, Congo basin, Sudan): mostly not blue.
+    for (lat, lon) in [(23.0, 10.0), (0.0, 22.0), (15.0, 30.0)] {
+        assert!(watery(lat, lon) < 0.5, "land at {lat},{lon}: {}", watery(lat, lon));
+    }
+    // Behind the limb: black space (the corner of the image).
+    let [r, g, b] = rgb(&img, &cam, (2, 2));
+    assert!(r + g + b < 60, "space: {r},{g},{b}");
+
+    // Antarctica seen from above the south pole in sunlight: ice, white.
+    let cam = orbit(-89.0, 0.0, 256);
+    let shot = Shot { camera: cam.clone(), sun: Some(DVec3::new(0.2, 0.0, -1.0)) };
+    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000).unwrap();
+    let [r, g, b] = rgb(&img, &cam, pixel_of(&cam, on_ground(-82.0, 40.0)).unwrap());
+    assert!(r > 170 && g > 170 && b > 170, "ice: {r},{g},{b}");
+}
+
+#[test]
+fn ground_view_shows_a_river_where_the_mesh_has_one() {
+    let (planet, params) = earth();
+    let mesh = &planet.mesh;
+    // A river vertex with dry land all around it (not the mouth), on a long river.
+    let mut reaches = planet.rivers.reaches(mesh);
+    reaches.sort_by(|a, b| b.upstream_area_m2.total_cmp(&a.upstream_area_m2));
+    let reach = reaches.iter().find(|r| r.vertices.len() > 12).expect("a long river");
+    let river = reach.vertices[reach.vertices.len() / 2];
+    assert!(mesh.vertices[river as usize].flags.contains(VertexFlags::RIVER));
+    let v = &mesh.vertices[river as usize];
+    let up = v.p().normalize();
+    let eye = v.p() + up * 1500.0 + up.any_orthonormal_vector() * 100.0;
+    let q = format!(
+        "eye={},{},{}&target={},{},{}&width=320&height=240&fov=50",
+        eye.x, eye.y, eye.z, v.pos[0], v.pos[1], v.pos[2]
+    );
+    // Sun 50 degrees from the zenith, away from the camera: no glint on the water.
+    let sun = (up + up.cross(eye - v.p()).normalize() * 1.2).normalize();
+    let shot = Shot { camera: Camera::parse_query(&q, params.radius_m).unwrap().0, sun: Some(sun) };
+    let mut adapter = Adapter::new(mesh.clone(), params.clone());
+    adapter.adapt(&shot.camera, Some(400_000));
+    let adapted = adapter.mesh();
+    let img = draw(renderer(), adapted, params, &shot).unwrap();
+    let cam = &shot.camera;
+    // The river vertex keeps its index; its water stands above its bed, and it is drawn as water.
+    let av = &adapted.vertices[river as usize];
+    assert!(av.submerged());
+    let (x, y) = pixel_of(cam, av.p()).unwrap();
+    let [r, g, b] = rgb(&img, cam, (x, y));
+    assert!(b > r + 15 && b > g, "river pixel: {r},{g},{b}");
+    // Dry land around it is not water-coloured somewhere in the view.
+    let dry = adapted
+        .vertices
+        .iter()
+        .filter(|w| !w.submerged() && w.p().distance(av.p()) < 400.0 && w.p().distance(av.p()) > 150.0)
+        .filter_map(|w| pixel_of(cam, w.p()))
+        .map(|p| rgb(&img, cam, p))
+        .filter(|[r, g, b]| r >= b || g >= b)
+        .count();
+    assert!(dry > 3, "land around the river: {dry}");
+}
+
+#[test]
+fn the_same_shot_gives_the_same_bytes_and_formats_decode() {
+    let (planet, params) = earth();
+    let shot = Shot { camera: orbit(40.0, -100.0, 200), sun: None };
+    let a = snapshot(renderer(), &planet.mesh, params, &shot, 100_000).unwrap();
+    let b = snapshot(renderer(), &planet.mesh, params, &shot, 100_000).unwrap();
+    assert!(a == b, "pixels differ between identical renders");
+    let png = encode(&a, 200, 200, ImageFormat::Png);
+    assert_eq!(png, encode(&b, 200, 200, ImageFormat::Png));
+    let decoded = image::load_from_memory(&png).unwrap().to_rgba8();
+    assert_eq!(decoded.as_raw(), &a);
+    let jpeg = encode(&a, 200, 200, ImageFormat::Jpeg);
+    assert_eq!(&jpeg[..2], &[0xFF, 0xD8]);
+    assert_eq!(image::load_from_memory(&jpeg).unwrap().width(), 200);
+}
+
+#[test]
+fn shots_parse_the_sun_and_reject_bad_values() {
+    let r = 6_371_000.0;
+    let base = "eye=20000000,0,0&target=0,0,0";
+    let (shot, rest) = Shot::parse_query(&format!("{base}&sun=0,0,2&max_faces=10"), r).unwrap();
+    assert_eq!(shot.sun, Some(DVec3::Z));
+    assert_eq!(rest, vec![("max_faces".to_string(), "10".to_string())]);
+    assert_eq!(Shot::parse_query(&shot.to_query(), r).unwrap().0, shot);
+    for bad in ["sun=0,0,0", "sun=1,2", "sun=a,b,c", "sun=NaN,0,1", "sun=inf,0,0"] {
+        let e = Shot::parse_query(&format!("{base}&{bad}"), r).unwrap_err();
+        assert_eq!(e.field, "sun", "{bad}");
+    }
+    for (bad, field) in [("width=0", "width"), ("height=8193", "height"), ("width=-3", "width")] {
+        let e = Shot::parse_query(&format!("{base}&{bad}"), r).unwrap_err();
+        assert_eq!(e.field, field, "{bad}");
+    }
+    assert_eq!("JPG".parse::<ImageFormat>(), Ok(ImageFormat::Jpeg));
+    assert!("gif".parse::<ImageFormat>().is_err());
+}
