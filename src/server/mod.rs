@@ -18,6 +18,7 @@ pub mod planets;
 pub mod resources;
 pub mod state;
 pub mod store;
+pub mod tiles;
 
 use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{header, HeaderMap, HeaderValue, Method, StatusCode, Version};
@@ -253,6 +254,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/landmask.png", get(resources::landmask))
         .route("/v1/planets/{id}/preview.png", get(resources::preview))
         .route("/v1/planets/{id}/elevation.tif", get(resources::elevation))
+        .route("/v1/planets/{id}/tileset.json", get(tiles::tileset))
+        .route("/v1/planets/{id}/tiles/{name}", get(tiles::tile))
         .fallback(not_found)
         .layer(DefaultBodyLimit::max(c.body_limit))
         .layer(RequestBodyLimitLayer::new(c.body_limit))

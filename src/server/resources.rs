@@ -8,7 +8,7 @@
 //! is started); one whose build failed answers 409 `build_failed`.
 
 use super::error::ApiError;
-use super::state::{AppState, Availability, Cached};
+use super::state::{AppState, Availability, Cached, Entry};
 use super::Config;
 use crate::adapt::{Adapter, Camera};
 use crate::build::Planet;
@@ -129,9 +129,9 @@ fn render(res: Resource, job: &Job, planet: &Planet, params: &Params) -> Vec<u8>
 }
 
 /// Strong validator of one answer: the software version, id, route and normalised query.
-fn etag(id: &str, res: Resource, norm: &str) -> String {
+fn etag(id: &str, route: &str, norm: &str) -> String {
     let mut h = Sha256::new();
-    for part in [env!("CARGO_PKG_VERSION"), id, res.name(), norm] {
+    for part in [env!("CARGO_PKG_VERSION"), id, route, norm] {
         h.update(part.as_bytes());
         h.update([0]);
     }
@@ -167,10 +167,42 @@ pub async fn get(
     let entry = state.lookup(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
     let params = entry.input.params.clone();
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
-    let tag = etag(&id, res, &norm);
-    let key = format!("{id}/{}?{norm}", res.name());
+    let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
+    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params)).await
+}
+
+/// One answer derived from a built planet: its route below the planet and normalised query
+/// (what its `ETag` and cache key cover) and its content type.
+pub struct Derived {
+    pub route: String,
+    pub norm: String,
+    pub content_type: &'static str,
+}
+
+/// Cache key of a derived answer; every key of a planet starts with `{id}/`.
+pub fn cache_key(id: &str, route: &str, norm: &str) -> String {
+    format!("{id}/{route}?{norm}")
+}
+
+/// Answers a derived file: 304 when `If-None-Match` lists its tag, from the cache, or by
+/// running `render` on the built planet (off the runtime, under a render permit, shared by
+/// concurrent requests) and caching the bytes; 409 while the planet is not built.
+pub async fn cached<F>(
+    state: Arc<AppState>,
+    entry: Arc<Entry>,
+    derived: Derived,
+    headers: HeaderMap,
+    render: F,
+) -> Result<Response, ApiError>
+where
+    F: FnOnce(Arc<Planet>) -> Vec<u8> + Send + 'static,
+{
+    let id = entry.id.clone();
+    let Derived { route, norm, content_type } = derived;
+    let tag = etag(&id, &route, &norm);
+    let key = cache_key(&id, &route, &norm);
     let ok = |bytes: Bytes| {
-        let r = ([(header::CONTENT_TYPE, HeaderValue::from_static(res.content_type()))], bytes).into_response();
+        let r = ([(header::CONTENT_TYPE, HeaderValue::from_static(content_type))], bytes).into_response();
         immutable(r, &tag)
     };
     let planet = match state.availability(&entry) {
@@ -202,7 +234,7 @@ pub async fn get(
             if !state.config.render_delay.is_zero() {
                 tokio::time::sleep(state.config.render_delay).await;
             }
-            let out = tokio::task::spawn_blocking(move || Bytes::from(render(res, &job, &planet, &params)))
+            let out = tokio::task::spawn_blocking(move || Bytes::from(render(planet)))
                 .await
                 .map_err(|_| ApiError::internal("rendering failed"))?;
             if !entry_gone(&state, &id) {

@@ -24,11 +24,13 @@ pub const EARTH_MAP: &[u8] = include_bytes!("../../maps/earth_landmask_ne10m_102
 /// The built-in planet's seed.
 pub const EARTH_SEED: u64 = 42;
 
-/// A cached value: a built planet or a rendered response body.
+/// A cached value: a built planet, a rendered response body or a planet's tiling.
 #[derive(Clone)]
 pub enum Cached {
     Planet(Arc<Planet>),
     Response(Bytes),
+    /// A planet prepared for 3D Tiles (`export::tiles`).
+    Tiles(Arc<crate::export::tiles::PlanetTiles>),
 }
 
 /// Where a planet's build stands.

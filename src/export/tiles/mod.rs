@@ -58,6 +58,18 @@ const PAD_EDGES: f64 = 1.5;
 /// Most placements remembered before the memory is cleared.
 const MAX_PLACEMENTS: usize = 1 << 17;
 
+/// Nominal edge length of level-`level` content: the octahedron's edge (a quarter of a great
+/// circle) over `2^(level + CONTENT_DEPTH / 2)`.
+pub fn edge_length(params: &Params, level: u8) -> f64 {
+    std::f64::consts::FRAC_PI_2 * params.radius_m / 2f64.powi(i32::from(level) + CONTENT_DEPTH as i32 / 2)
+}
+
+/// The deepest level of a planet: [`MAX_LEVEL`], or the deepest whose edges are still at least
+/// the adaption's minimum edge length.
+pub fn max_level(params: &Params) -> u8 {
+    (0..=MAX_LEVEL).take_while(|&l| edge_length(params, l) >= params.min_edge_length_m).last().unwrap_or(0)
+}
+
 /// Where a tile sits: the origin of its `.glb` positions and its (nested) bounding box.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Placement {
@@ -101,10 +113,14 @@ impl PlanetTiles {
         self.max_level
     }
 
-    /// Nominal edge length of level-`level` content: the octahedron's edge (a quarter of a
-    /// great circle) over `2^(level + CONTENT_DEPTH / 2)`.
+    /// Nominal edge length of level-`level` content (see [`edge_length`]).
     pub fn edge_length(&self, level: u8) -> f64 {
-        std::f64::consts::FRAC_PI_2 * self.params.radius_m / 2f64.powi(i32::from(level) + CONTENT_DEPTH as i32 / 2)
+        edge_length(&self.params, level)
+    }
+
+    /// Bytes the tiling keeps: the tree's maps and the remembered placements (estimate).
+    pub fn bytes(&self) -> usize {
+        self.tree.bytes() + self.placements.lock().expect("placements lock").len() * 256
     }
 
     /// Geometric error of a level, metres: its nominal edge length.

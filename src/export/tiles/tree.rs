@@ -71,6 +71,11 @@ impl BaseTree {
         Ok(BaseTree { midpoints, edges })
     }
 
+    /// Bytes the maps hold (estimate: key, value and hash-table overhead per entry).
+    pub fn bytes(&self) -> usize {
+        (self.midpoints.capacity() + self.edges.capacity()) * 24
+    }
+
     /// How many splits the base mesh holds.
     pub fn splits(&self) -> usize {
         self.midpoints.len()

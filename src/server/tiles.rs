@@ -1,0 +1,108 @@
+//! 3D Tiles routes of a planet (`export::tiles`): `tileset.json`, the tiles' contents
+//! `tiles/{key}.glb` and the external tilesets `tiles/{key}.json`, cached and immutable like the
+//! other derived files (`resources.rs`). A planet's tiling — the bisection tree behind its mesh
+//! and the tiles' placements — is cached beside the planet; the tile contents made to place the
+//! tiles a tileset file lists are cached as the answers of their own routes.
+//!
+//! Tile names are checked before anything else: a name that is no key (`0`-`7`, then quadrant
+//! digits `0`-`3`) with `.glb` or `.json` answers 422 `invalid_tile`; a key deeper than the
+//! planet's deepest level, or `.json` for a tile that starts no external tileset, answers 404.
+
+use super::error::ApiError;
+use super::resources::{cache_key, cached, Derived};
+use super::state::{AppState, Cached, Entry};
+use crate::build::Planet;
+use crate::export::tiles::{self, is_subtree_root, KeyError, PlanetTiles, TileFile, TileKey};
+use axum::body::Bytes;
+use axum::extract::{Path, State};
+use axum::http::HeaderMap;
+use axum::response::Response;
+use std::sync::Arc;
+
+type Answer = Result<Response, ApiError>;
+
+async fn planet_entry(state: &AppState, id: &str) -> Result<Arc<Entry>, ApiError> {
+    state.lookup(id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))
+}
+
+/// `GET /v1/planets/{id}/tileset.json`.
+pub async fn tileset(State(state): State<Arc<AppState>>, Path(id): Path<String>, headers: HeaderMap) -> Answer {
+    let entry = planet_entry(&state, &id).await?;
+    let derived = Derived { route: "tileset.json".into(), norm: String::new(), content_type: "application/json" };
+    let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
+    cached(state, entry, derived, headers, move |planet| {
+        let tiling = tiling(&shared, &owner, planet);
+        let file = tiling.tileset_json(tiling.max_level());
+        keep_contents(&shared, &id, file.contents);
+        file.json
+    })
+    .await
+}
+
+/// `GET /v1/planets/{id}/tiles/{name}`: `{key}.glb` or `{key}.json`.
+pub async fn tile(
+    State(state): State<Arc<AppState>>,
+    Path((id, name)): Path<(String, String)>,
+    headers: HeaderMap,
+) -> Answer {
+    let entry = planet_entry(&state, &id).await?;
+    let max_level = tiles::max_level(&entry.input.params);
+    let file = TileFile::parse(&name, max_level).map_err(|e| match e {
+        KeyError::Malformed => ApiError::unprocessable(
+            "invalid_tile",
+            "tile",
+            format!("{name:?} is no tile: expected a root digit 0-7, quadrant digits 0-3, then .glb or .json"),
+        ),
+        KeyError::TooDeep => ApiError::not_found(&format!("tile {name:?} (the deepest level is {max_level})")),
+    })?;
+    let content_type = match file {
+        TileFile::Content(_) => "model/gltf-binary",
+        TileFile::Subtree(k) if is_subtree_root(k.level) => "application/json",
+        TileFile::Subtree(_) => {
+            return Err(ApiError::not_found(&format!("tileset {name:?} (only levels 1, 3, 5, ... start one)")))
+        }
+    };
+    let derived = Derived { route: format!("tiles/{}", file.name()), norm: String::new(), content_type };
+    let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
+    cached(state, entry, derived, headers, move |planet| {
+        let tiling = tiling(&shared, &owner, planet);
+        match file {
+            TileFile::Content(key) => tiling.content(key).glb,
+            TileFile::Subtree(key) => {
+                let file = tiling.subtree_json(key, max_level).expect("checked to start a tileset");
+                keep_contents(&shared, &id, file.contents);
+                file.json
+            }
+        }
+    })
+    .await
+}
+
+/// The planet's tiling, from the cache or made now (blocking).
+fn tiling(state: &AppState, entry: &Entry, planet: Arc<Planet>) -> Arc<PlanetTiles> {
+    let key = format!("{}/tiling", entry.id);
+    if let Some(Cached::Tiles(t)) = state.cache.get(&key) {
+        return t;
+    }
+    let made = Arc::new(
+        PlanetTiles::new(planet, entry.input.params.clone())
+            .expect("a planet's mesh is a bisection refinement of the octahedron"),
+    );
+    if state.entry(&entry.id).is_some() {
+        state.cache.insert(key, Cached::Tiles(Arc::clone(&made)), made.bytes());
+    }
+    made
+}
+
+/// Caches tile contents made on the way as the answers of their routes.
+fn keep_contents(state: &AppState, id: &str, contents: Vec<(TileKey, Vec<u8>)>) {
+    if state.entry(id).is_none() {
+        return;
+    }
+    for (key, glb) in contents {
+        let cache_key = cache_key(id, &format!("tiles/{}", TileFile::Content(key).name()), "");
+        let bytes = Bytes::from(glb);
+        let weight = bytes.len() + cache_key.len();
+        state.cache.insert(cache_key, Cached::Response(bytes), weight);
+    }
+}
