@@ -42,8 +42,43 @@ fn cases(maps: &Path, quick: bool) -> Vec<Case> {
     out
 }
 
-/// Runs every case `runs` times and prints the median.
-pub fn run(maps: &Path, runs: usize, quick: bool) {
+/// The tables `riverworld bench` can print.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Table {
+    /// Planet builds.
+    Build,
+    /// View-dependent adaption.
+    Adapt,
+    /// End-to-end snapshots.
+    Render,
+}
+
+/// Prints the chosen tables (all when `only` is empty); builds run every case `runs` times and
+/// report the median.
+pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
+    let wants = |t: Table| only.is_empty() || only.contains(&t);
+    if wants(Table::Build) {
+        build_table(maps, runs, quick);
+    }
+    if !wants(Table::Adapt) && !wants(Table::Render) {
+        return;
+    }
+    let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
+    let spec = match load_map(&src, &MapLimits::default()) {
+        Ok(map) => PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) },
+        Err(e) => return eprintln!("skipping the adaption and snapshot tables: {e}"),
+    };
+    if wants(Table::Adapt) {
+        println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
+        crate::bench_adapt::run(&spec);
+    }
+    if wants(Table::Render) {
+        println!("\n### Snapshots (render.png), Earth bitmap 1024x512, default targets, median of {runs}\n");
+        crate::bench_render::run(&spec, runs);
+    }
+}
+
+fn build_table(maps: &Path, runs: usize, quick: bool) {
     println!("| case | faces | vertices | bytes/vertex | build ms (median of {runs}) | Mfaces/s |");
     println!("|---|---:|---:|---:|---:|---:|");
     for case in cases(maps, quick) {
@@ -67,14 +102,5 @@ pub fn run(maps: &Path, runs: usize, quick: bool) {
             ms,
             s.faces as f64 / ms / 1000.0
         );
-    }
-    let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
-    match load_map(&src, &MapLimits::default()) {
-        Ok(map) => {
-            println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
-            let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
-            crate::bench_adapt::run(&spec);
-        }
-        Err(e) => eprintln!("skipping the adaption table: {e}"),
     }
 }

@@ -5,6 +5,7 @@
 pub mod adapt;
 pub mod bench;
 pub mod bench_adapt;
+pub mod bench_render;
 pub mod build;
 pub mod export;
 pub mod generate;

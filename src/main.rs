@@ -114,7 +114,7 @@ enum Command {
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=9))]
         levels: u8,
     },
-    /// Time planet builds and print a table (base mesh + continents + rivers).
+    /// Time planet builds, view adaption and snapshots, and print Markdown tables.
     Bench {
         /// Directory with the Earth maps.
         #[arg(long, default_value = "maps")]
@@ -125,6 +125,9 @@ enum Command {
         /// Only the small cases.
         #[arg(long)]
         quick: bool,
+        /// Print only these tables (repeatable) [default: all].
+        #[arg(long, value_enum)]
+        only: Vec<riverworld::bench::Table>,
     },
 }
 
@@ -425,8 +428,8 @@ fn main() -> ExitCode {
                 ExitCode::from(2)
             }
         },
-        Command::Bench { maps, runs, quick } => {
-            riverworld::bench::run(&maps, runs.max(1), quick);
+        Command::Bench { maps, runs, quick, only } => {
+            riverworld::bench::run(&maps, runs.max(1), quick, &only);
             ExitCode::SUCCESS
         }
     }

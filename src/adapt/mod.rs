@@ -29,6 +29,8 @@ use std::time::Instant;
 pub const MAX_PASSES: usize = 400;
 /// Each step of the face budget's search scales the criterion's `c` by this.
 const BUDGET_STEP: f64 = 1.25;
+/// Coarsest step of the face budget's search (`1.25^130` is about 4e12).
+const MAX_STEP: i32 = 130;
 
 /// What one adaption did (`riverworld view --stats`).
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -50,12 +52,16 @@ pub struct AdaptStats {
 pub struct Adapter {
     mesh: Mesh,
     params: Params,
+    /// The mesh adaption started from; budget searches restart from it instead of coarsening.
+    base: Mesh,
+    /// Step of the last budget search (see [`Adapter::fit_budget`]).
+    last_step: i32,
 }
 
 impl Adapter {
     /// Starts from a base mesh.
     pub fn new(base: Mesh, params: Params) -> Adapter {
-        Adapter { mesh: base, params }
+        Adapter { mesh: base.clone(), params, base, last_step: 0 }
     }
 
     pub fn mesh(&self) -> &Mesh {
@@ -67,35 +73,91 @@ impl Adapter {
     }
 
     /// Adapts to `cam` until the mesh stops changing. With `max_faces`, the target pixel sizes
-    /// grow in steps of 1.25x until the converged mesh fits: the most important splits (largest
-    /// projected edges) are the ones kept, and the result still depends only on the camera.
+    /// are scaled by the smallest power of 1.25 whose converged mesh fits (the most important
+    /// splits, the largest projected edges, are the ones kept), so the result still depends only
+    /// on the camera and the budget. See [`Adapter::fit_budget`] for how that power is found.
     pub fn adapt(&mut self, cam: &Camera, max_faces: Option<usize>) -> AdaptStats {
         let start = Instant::now();
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };
-        let mut scale = 1.0;
-        loop {
-            let mut view = View::new(cam, self.params.radius_m, self.params.min_edge_length_m);
-            view.c_land *= scale;
-            view.c_water *= scale;
-            let cap = max_faces.map(|m| m.saturating_mul(4).max(64));
-            let converged = self.run(&view, cap, &mut stats);
-            let over = max_faces.is_some_and(|m| self.mesh.faces.len() > m);
-            if !over {
-                stats.converged = converged;
-                break;
+        let step = match max_faces {
+            None => {
+                stats.converged = self.run(&self.view(cam, 0), None, &mut stats);
+                0
             }
-            scale *= BUDGET_STEP;
-            if scale > 1.0e12 {
-                stats.converged = false;
-                break;
-            }
-        }
-        stats.lod_scale = scale;
+            Some(max) => self.fit_budget(cam, max, &mut stats),
+        };
+        stats.lod_scale = BUDGET_STEP.powi(step);
         stats.faces = self.mesh.faces.len();
         stats.vertices = self.mesh.vertices.len();
         stats.bytes_per_vertex = self.mesh.bytes_per_vertex();
         stats.adapt_ms = start.elapsed().as_secs_f64() * 1000.0;
         stats
+    }
+
+    /// The view of `cam` with its pixel targets scaled by `1.25^step`.
+    fn view(&self, cam: &Camera, step: i32) -> View {
+        let mut view = View::new(cam, self.params.radius_m, self.params.min_edge_length_m);
+        let scale = BUDGET_STEP.powi(step);
+        view.c_land *= scale;
+        view.c_water *= scale;
+        view
+    }
+
+    /// Finds the smallest step `k` whose converged face count `F(k)` is at most `max` and
+    /// leaves that mesh; returns `k`.
+    ///
+    /// `F` falls as `k` grows (a coarser target wants a subset of the splits, and the
+    /// converged mesh is the least conforming refinement holding them), so this is a search
+    /// over a monotone function. Trials run with the budget as a face cap: refining stops as
+    /// soon as the mesh exceeds it, which proves `F(k) > max`. Coarsening (collapses) is the
+    /// slow direction, so trials start from the coarsest mesh at hand: the last mesh that
+    /// fitted (a sub-refinement of every finer target) or the base mesh. The next step is
+    /// predicted from faces growing with the square of the inverse target size, and the search
+    /// starts at the previous call's step (frame-to-frame coherence).
+    fn fit_budget(&mut self, cam: &Camera, max: usize, stats: &mut AdaptStats) -> i32 {
+        let steps_for = |ratio: f64| (ratio.max(1.0).sqrt().ln() / BUDGET_STEP.ln()).ceil() as i32;
+        let mut k = self.last_step.clamp(0, MAX_STEP);
+        let mut over: i32 = -1;
+        let mut fits: Option<(i32, Mesh)> = None;
+        let mut first = true;
+        loop {
+            if !first {
+                self.mesh = match &fits {
+                    Some((_, m)) => m.clone(),
+                    None => self.base.clone(),
+                };
+            }
+            first = false;
+            let converged = self.run(&self.view(cam, k), Some(max), stats);
+            let faces = self.mesh.faces.len();
+            if converged && faces <= max {
+                stats.converged = true;
+                if k == 0 || k == over + 1 {
+                    break;
+                }
+                let down = steps_for(max as f64 / faces.max(1) as f64).max(1) - 1;
+                fits = Some((k, std::mem::take(&mut self.mesh)));
+                k = (k - down.max(1)).max(over + 1);
+            } else {
+                over = k;
+                if k >= MAX_STEP {
+                    // Not even the coarsest target fits (a budget below the base mesh).
+                    stats.converged = false;
+                    break;
+                }
+                match &fits {
+                    Some((hi, _)) if *hi == over + 1 => {
+                        self.mesh = fits.take().expect("a fitting mesh").1;
+                        k = over + 1;
+                        break;
+                    }
+                    Some((hi, _)) => k = (k + steps_for(faces as f64 / max as f64).max(1)).min(hi - 1),
+                    None => k = (k + steps_for(faces as f64 / max as f64).max(1)).min(MAX_STEP),
+                }
+            }
+        }
+        self.last_step = k;
+        k
     }
 
     /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit.

@@ -184,6 +184,41 @@ fn face_budget_is_respected_and_path_independent() {
 }
 
 #[test]
+fn face_budget_takes_the_finest_target_that_fits_from_any_start() {
+    let cam = camera(10.0, 20.0, 50_000.0, 150_000.0, 1.0);
+    let ground = camera(12.0, 21.0, 3_000.0, 9_000.0, 1.0);
+    let base_faces = base().mesh.faces.len();
+    for max in [base_faces + 500, 12_000, 40_000] {
+        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        let s = a.adapt(&cam, Some(max));
+        assert!(s.converged && s.faces <= max, "{max}: {s:?}");
+        let k = (s.lod_scale.ln() / BUDGET_STEP.ln()).round() as i32;
+        assert!((BUDGET_STEP.powi(k) - s.lod_scale).abs() < 1e-9);
+        // The mesh is the converged mesh of step k, and step k - 1 does not fit.
+        let converge = |step: i32| {
+            let mut b = Adapter::new(base().mesh.clone(), Params::default());
+            let view = b.view(&cam, step);
+            assert!(b.run(&view, None, &mut AdaptStats::default()));
+            b.mesh
+        };
+        assert!(canonical(a.mesh()) == canonical(&converge(k)));
+        if k > 0 {
+            assert!(converge(k - 1).faces.len() > max, "{max}: step {k} is not the finest that fits");
+        }
+        // The same mesh after a finer budgeted view, an unbudgeted ground view, or twice.
+        for before in [Some(max * 3), None] {
+            let mut c = Adapter::new(base().mesh.clone(), Params::default());
+            c.adapt(&ground, before);
+            let s2 = c.adapt(&cam, Some(max));
+            assert_eq!(s2.lod_scale, s.lod_scale);
+            assert!(canonical(c.mesh()) == canonical(a.mesh()));
+        }
+        let again = a.adapt(&cam, Some(max));
+        assert_eq!(again.lod_scale, s.lod_scale);
+    }
+}
+
+#[test]
 fn coarsening_back_to_orbit_matches_a_direct_orbit_view() {
     let orbit = Camera::new(DVec3::new(0.0, 0.0, 3.0e7), DVec3::ZERO, None, 30.0, 320, 320, 4.0, 20.0, R).unwrap();
     let (direct, _) = adapted(std::slice::from_ref(&orbit));
