@@ -186,6 +186,10 @@ struct ServeArgs {
     /// Most pixels an uploaded map may declare, in units of 2^20 pixels (checked before decoding).
     #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u64).range(1..=1024))]
     max_map_mpixels: u64,
+    /// Most pixels (width x height) a render.png or render.jpg may ask for.
+    #[arg(long, default_value_t = riverworld::server::DEFAULT_MAX_RENDER_PIXELS,
+          value_parser = clap::value_parser!(u64).range(1..=(8192 * 8192)))]
+    max_render_pixels: u64,
 }
 
 fn run_serve(args: ServeArgs) -> Result<(), String> {
@@ -218,6 +222,7 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         render_queue: args.render_queue,
         max_raster_width: args.max_raster_width,
         max_map_pixels: args.max_map_mpixels << 20,
+        max_render_pixels: args.max_render_pixels,
         render_delay: std::time::Duration::ZERO,
     };
     let runtime = tokio::runtime::Runtime::new().map_err(|e| format!("cannot start the runtime: {e}"))?;

@@ -22,6 +22,13 @@ fn run(args: &[&str]) -> Output {
     bin().args(args).output().expect("binary runs")
 }
 
+/// Runs a command that must fail with exit code 2 and name `needle` on stderr.
+fn refused(args: &[&str], needle: &str) {
+    let o = run(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}");
+    assert!(String::from_utf8_lossy(&o.stderr).contains(needle), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+}
+
 fn stats(dir: &Path) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(dir.join("stats.json")).unwrap()).unwrap()
 }
@@ -222,8 +229,36 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
         ("eye=0,0,1e7&target=0,0,0&width=0", "width"),
         ("eye=nan,0,1e7&target=0,0,0", "eye"),
     ] {
-        let o = run(&["view", "--faces", "200", "--camera", bad, "--out", dir.join("x.glb").to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(2), "{bad}");
-        assert!(String::from_utf8_lossy(&o.stderr).contains(needle), "{bad}: {}", String::from_utf8_lossy(&o.stderr));
+        refused(&["view", "--faces", "200", "--camera", bad, "--out", dir.join("x.glb").to_str().unwrap()], needle);
     }
+}
+
+#[test]
+fn render_writes_identical_images_in_the_asked_format_and_refuses_bad_input() {
+    let dir = scratch("render");
+    let cam = "eye=2e7,0,5e6&target=0,0,0&width=200&height=150&fov=40";
+    let render = |out: &Path, extra: &[&str]| {
+        let mut args = vec!["render", "--faces", "2000", "--camera", cam, "--max-faces", "50000"];
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&["--out", out.to_str().unwrap()]);
+        run(&args)
+    };
+    let (a, b, c) = (dir.join("a.png"), dir.join("b.png"), dir.join("c.jpg"));
+    for (out, extra) in [(&a, &[][..]), (&b, &[][..]), (&c, &[][..])] {
+        let o = render(out, extra);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let png = std::fs::read(&a).unwrap();
+    assert!(png == std::fs::read(&b).unwrap(), "render differs between runs");
+    let img = image::load_from_memory(&png).unwrap();
+    assert_eq!((img.width(), img.height()), (200, 150));
+    assert_eq!(&std::fs::read(&c).unwrap()[..2], &[0xFF, 0xD8], "a .jpg name gives JPEG");
+    for (bad, needle) in [
+        ("eye=2e7,0,0&target=0,0,0&width=9000", "width"),
+        ("eye=2e7,0,0&target=0,0,0&sun=0,0,0", "sun"),
+        ("eye=2e7,0,0&target=0,0,0&zoom=3", "zoom"),
+    ] {
+        refused(&["render", "--faces", "200", "--camera", bad, "--out", dir.join("x.png").to_str().unwrap()], needle);
+    }
+    assert!(!dir.join("x.png").exists());
 }

@@ -16,6 +16,7 @@ pub mod limit;
 pub mod metrics;
 pub mod planets;
 pub mod resources;
+pub mod snapshot;
 pub mod state;
 pub mod store;
 pub mod tiles;
@@ -42,6 +43,9 @@ use tower_http::trace::TraceLayer;
 
 /// The API description served at `/openapi.yaml`.
 pub const OPENAPI: &str = include_str!("../../openapi.yaml");
+
+/// Default of [`Config::max_render_pixels`]: 4096 x 4096.
+pub const DEFAULT_MAX_RENDER_PIXELS: u64 = 4096 * 4096;
 
 /// How the server runs; `Default` matches `riverworld serve` without options.
 #[derive(Clone, Debug)]
@@ -79,6 +83,8 @@ pub struct Config {
     pub max_raster_width: u32,
     /// Most pixels (width x height, read from the header before decoding) an uploaded map may have.
     pub max_map_pixels: u64,
+    /// Most pixels (width x height) a render.png or render.jpg may ask for.
+    pub max_render_pixels: u64,
     /// A pause inside each heavy render while it holds its permit; zero in service, lets tests
     /// observe busy permits and request timeouts.
     pub render_delay: Duration,
@@ -103,6 +109,7 @@ impl Default for Config {
             render_queue: 16,
             max_raster_width: resources::MAX_RASTER_WIDTH,
             max_map_pixels: crate::maps::MapLimits::default().max_pixels,
+            max_render_pixels: DEFAULT_MAX_RENDER_PIXELS,
             render_delay: Duration::ZERO,
         }
     }
@@ -177,6 +184,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
         store,
         config,
     });
+    tokio::spawn(snapshot::announce());
     if state.config.default_planet {
         let earth = Arc::new(earth_entry());
         state.planets.write().expect("planets lock").insert(EARTH_ID.to_string(), Arc::clone(&earth));
@@ -254,6 +262,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/landmask.png", get(resources::landmask))
         .route("/v1/planets/{id}/preview.png", get(resources::preview))
         .route("/v1/planets/{id}/elevation.tif", get(resources::elevation))
+        .route("/v1/planets/{id}/render.png", get(snapshot::png))
+        .route("/v1/planets/{id}/render.jpg", get(snapshot::jpeg))
         .route("/v1/planets/{id}/tileset.json", get(tiles::tileset))
         .route("/v1/planets/{id}/tiles/{name}", get(tiles::tile))
         .fallback(not_found)

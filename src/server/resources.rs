@@ -67,7 +67,7 @@ enum Job {
     Raster { width: u32 },
 }
 
-fn unknown_key(key: &str, allowed: &str) -> ApiError {
+pub fn unknown_key(key: &str, allowed: &str) -> ApiError {
     ApiError::unprocessable("unknown_parameter", key, format!("unknown query parameter {key:?}; allowed: {allowed}"))
 }
 
@@ -197,6 +197,20 @@ pub async fn cached<F>(
 where
     F: FnOnce(Arc<Planet>) -> Vec<u8> + Send + 'static,
 {
+    cached_or_error(state, entry, derived, headers, move |planet| Ok(render(planet))).await
+}
+
+/// [`cached`] for work that can fail: an error is answered as it is and nothing is cached.
+pub async fn cached_or_error<F>(
+    state: Arc<AppState>,
+    entry: Arc<Entry>,
+    derived: Derived,
+    headers: HeaderMap,
+    render: F,
+) -> Result<Response, ApiError>
+where
+    F: FnOnce(Arc<Planet>) -> Result<Vec<u8>, ApiError> + Send + 'static,
+{
     let id = entry.id.clone();
     let Derived { route, norm, content_type } = derived;
     let tag = etag(&id, &route, &norm);
@@ -234,9 +248,9 @@ where
             if !state.config.render_delay.is_zero() {
                 tokio::time::sleep(state.config.render_delay).await;
             }
-            let out = tokio::task::spawn_blocking(move || Bytes::from(render(planet)))
+            let out = tokio::task::spawn_blocking(move || render(planet).map(Bytes::from))
                 .await
-                .map_err(|_| ApiError::internal("rendering failed"))?;
+                .map_err(|_| ApiError::internal("rendering failed"))??;
             if !entry_gone(&state, &id) {
                 state.cache.insert(key.clone(), Cached::Response(out.clone()), out.len() + key.len());
             }
@@ -276,7 +290,7 @@ pub async fn elevation(s: State<Arc<AppState>>, p: Path<String>, q: RawQuery, h:
 }
 
 /// Parses a query value as a whole number in `lo..=hi`, or a 422 naming the parameter.
-fn whole_number_in<T>(name: &'static str, v: &str, lo: T, hi: T) -> Result<T, ApiError>
+pub fn whole_number_in<T>(name: &'static str, v: &str, lo: T, hi: T) -> Result<T, ApiError>
 where
     T: std::str::FromStr + PartialOrd + std::fmt::Display,
 {
