@@ -7,7 +7,8 @@
 //! - cached `view.glb` for a fixed camera, `--connections` concurrent connections;
 //! - cached `rivers.geojson`, the same way;
 //! - a mix for `--duration` seconds: planet records and the list, views, rivers, rasters and a
-//!   few (idempotent) planet POSTs.
+//!   few (idempotent) planet POSTs;
+//! - 3D Tiles (`http_load/tiles.rs`): cold tile latency and size per level, cached tiles.
 //!
 //! For each: requests/s, p50/p99/max latency, 5xx and other non-2xx answers, and the server's
 //! peak resident memory (VmHWM from /proc/PID/status) after the phase.
@@ -15,7 +16,11 @@
 //! ```sh
 //! cargo bench --bench http_load                                 # 64 connections, 20 s + 20 s + 60 s
 //! cargo bench --bench http_load -- --connections 16 --phase 5 --duration 10
+//! cargo bench --bench http_load -- --tiles-only                 # only the 3D Tiles phases
 //! ```
+
+#[path = "http_load/tiles.rs"]
+mod tiles;
 
 use std::io::BufRead;
 use std::process::{Child, Command, Stdio};
@@ -28,10 +33,11 @@ struct Args {
     connections: usize,
     phase: f64,
     duration: f64,
+    tiles_only: bool,
 }
 
 fn args() -> Args {
-    let mut a = Args { connections: 64, phase: 20.0, duration: 60.0 };
+    let mut a = Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
         let mut value = || it.next().and_then(|v| v.parse::<f64>().ok()).unwrap_or_else(|| usage(&arg));
@@ -39,6 +45,7 @@ fn args() -> Args {
             "--connections" => a.connections = value() as usize,
             "--phase" => a.phase = value(),
             "--duration" => a.duration = value(),
+            "--tiles-only" => a.tiles_only = true,
             "--bench" => {}
             _ => usage(&arg),
         }
@@ -47,7 +54,7 @@ fn args() -> Args {
 }
 
 fn usage(arg: &str) -> ! {
-    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS");
+    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only");
     std::process::exit(2)
 }
 
@@ -182,6 +189,11 @@ async fn load(base: &str, connections: usize, secs: f64, mix: &[Req]) -> Outcome
             })
         })
         .collect();
+    gather(tasks, start).await
+}
+
+/// Waits for the connections' outcomes and adds them up, latencies sorted.
+async fn gather(tasks: Vec<tokio::task::JoinHandle<Outcome>>, start: Instant) -> Outcome {
     let mut all = Outcome::default();
     for t in tasks {
         let o = t.await.expect("load task");
@@ -240,6 +252,10 @@ fn main() {
         let t = Instant::now();
         warm(&client, &base, &get("/readyz")).await;
         println!("server ready (built-in planet earth built) after {:.1} s", t.elapsed().as_secs_f64());
+        if args.tiles_only {
+            tiles::run(&server, args.connections, args.phase).await;
+            return;
+        }
 
         // Cold views: the first request for a camera never asked for before.
         let mut cold = Vec::new();
@@ -307,5 +323,6 @@ fn main() {
         println!("{}", row(&format!("cached rivers.geojson, {:.0} s", args.phase), &o, server.peak_rss_mib()));
         let o = load(&base, args.connections, args.duration, &mix).await;
         println!("{}", row(&format!("mixed ({} kinds), {:.0} s", mix.len(), args.duration), &o, server.peak_rss_mib()));
+        tiles::run(&server, args.connections, args.phase).await;
     });
 }

@@ -88,8 +88,8 @@ async fn bad_tile_names_answer_json_errors() {
         let err = expect_error(s.get(&format!("{base}/{bad}")).await, 422, "invalid_tile").await;
         assert_eq!(err["field"], "tile", "{bad}");
     }
-    // Deeper than level 20, a tileset below a tile that starts none, an unknown planet.
-    expect_error(s.get(&format!("{base}/0{}.glb", "0".repeat(21))).await, 404, "not_found").await;
+    // Deeper than level 21, a tileset below a tile that starts none, an unknown planet.
+    expect_error(s.get(&format!("{base}/0{}.glb", "0".repeat(22))).await, 404, "not_found").await;
     expect_error(s.get(&format!("{base}/000.json")).await, 404, "not_found").await;
     expect_error(s.get(&format!("{base}/0.json")).await, 404, "not_found").await;
     expect_error(s.get("/v1/planets/ffffffffffffffff/tiles/0.glb").await, 404, "not_found").await;

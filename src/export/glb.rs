@@ -99,6 +99,7 @@ fn push_view(
     let offset = bin.len();
     debug_assert_eq!(offset % 4, 0);
     bin.extend_from_slice(&bytes);
+    bin.resize(bin.len().next_multiple_of(4), 0);
     root.push(json::buffer::View {
         buffer: json::Index::new(0),
         byte_length: USize64::from(bytes.len()),
@@ -198,9 +199,14 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
             let acc = root.push(accessor(view, n, ComponentType::U8, Type::Vec4, true, None));
             attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
         }
-        let bytes = m.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+        // 16-bit indices where they fit (65535 itself is reserved for primitive restart).
+        let (bytes, component) = if n <= usize::from(u16::MAX) {
+            (m.indices.iter().flat_map(|&i| (i as u16).to_le_bytes()).collect::<Vec<u8>>(), ComponentType::U16)
+        } else {
+            (m.indices.iter().flat_map(|i| i.to_le_bytes()).collect(), ComponentType::U32)
+        };
         let view = push_view(&mut root, &mut bin, bytes, ElementArrayBuffer);
-        let indices = root.push(accessor(view, m.indices.len(), ComponentType::U32, Type::Scalar, false, None));
+        let indices = root.push(accessor(view, m.indices.len(), component, Type::Scalar, false, None));
         let blend = m.colors.iter().any(|c| c[3] < 255);
         let mat = match materials[blend as usize] {
             Some(i) => i,

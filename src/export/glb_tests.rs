@@ -97,8 +97,12 @@ fn planet_glb_is_valid_and_matches_the_mesh() {
 
     let idx_acc = &p.root.accessors[prim.indices.unwrap().value()];
     assert_eq!(idx_acc.count.0 as usize, mesh.faces.len() * 3);
-    let idx: Vec<u32> =
-        accessor_bytes(&p, idx_acc, 4).chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+    let idx: Vec<u32> = match idx_acc.component_type {
+        Valid(GenericComponentType(ComponentType::U16)) => {
+            accessor_bytes(&p, idx_acc, 2).chunks(2).map(|c| u16::from_le_bytes(c.try_into().unwrap()) as u32).collect()
+        }
+        _ => accessor_bytes(&p, idx_acc, 4).chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect(),
+    };
     assert!(idx.iter().all(|&i| (i as usize) < n));
 
     // Winding: every triangle's normal points away from the planet centre in glTF axes too.

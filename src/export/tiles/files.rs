@@ -31,7 +31,8 @@ impl PlanetTiles {
         let mut level: Vec<TileKey> = (0..8).map(TileKey::root).collect();
         loop {
             for chunk in level.chunks(64) {
-                let made: Vec<(TileKey, Vec<u8>)> = chunk.par_iter().map(|&k| (k, self.content(k).glb)).collect();
+                let made: Vec<(TileKey, Vec<u8>)> =
+                    chunk.par_iter().map(|&k| (k, self.placed_content(k).glb)).collect();
                 for (key, glb) in made {
                     stats.tiles += 1;
                     stats.tile_bytes += glb.len() as u64;

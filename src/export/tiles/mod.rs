@@ -7,8 +7,8 @@
 //!   grandchildren in the bisection tree (two bisections halve its edges), named by quadrant
 //!   digits (`key.rs`).
 //! - **Content.** A level-`L` tile holds its cell refined `CONTENT_DEPTH` bisections deeper:
-//!   4,096 triangles whose edges are about [`PlanetTiles::edge_length`] long, the edge length
-//!   of the octahedron divided by `2^(L+6)`. Base-mesh vertices come from the base mesh; deeper
+//!   1,024 triangles whose edges are about [`PlanetTiles::edge_length`] long, the edge length
+//!   of the octahedron divided by `2^(L+5)`. Base-mesh vertices come from the base mesh; deeper
 //!   ones are made by the adaption's split (`tree.rs`, `content.rs`).
 //! - **Geometric error** is that nominal edge length, halving per level: at a screen-space error
 //!   of 16 px, a tile is replaced by its children when its edges would span more than 16 px.
@@ -49,10 +49,10 @@ use rayon::prelude::*;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-/// Bisections between a tile's cell and the triangles of its content (4,096 per tile).
-pub const CONTENT_DEPTH: u32 = 12;
+/// Bisections between a tile's cell and the triangles of its content (1,024 per tile).
+pub const CONTENT_DEPTH: u32 = 10;
 /// Deepest level any planet serves.
-pub const MAX_LEVEL: u8 = 20;
+pub const MAX_LEVEL: u8 = 21;
 /// Box pad for the levels below, in edge lengths of the tile's level.
 const PAD_EDGES: f64 = 1.5;
 /// Most placements remembered before the memory is cleared.
@@ -140,17 +140,18 @@ impl PlanetTiles {
         }
     }
 
-    /// Makes the content of `key` without placing it.
-    fn make(&self, key: TileKey) -> TileContent {
+    /// The content of tile `key`, which must be at most [`PlanetTiles::max_level`] deep. A
+    /// function of the key alone: no other tile is made or needed.
+    pub fn content(&self, key: TileKey) -> TileContent {
         assert!(key.level <= self.max_level, "tile {key} is deeper than level {}", self.max_level);
         let mut refiner = Refiner::new(&self.planet.mesh, &self.tree, &self.params);
         content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params)
     }
 
-    /// The content of tile `key`, which must be at most [`PlanetTiles::max_level`] deep.
-    pub fn content(&self, key: TileKey) -> TileContent {
-        let content = self.make(key);
-        self.remember(key, &content);
+    /// The content of `key`, placed (which places its ancestors first).
+    pub fn placed_content(&self, key: TileKey) -> TileContent {
+        let content = self.content(key);
+        self.place(key, &content);
         content
     }
 
@@ -158,7 +159,8 @@ impl PlanetTiles {
     /// of the level-0 tiles.
     pub fn planet_bounds(&self) -> OrientedBox {
         *self.planet_bounds.get_or_init(|| {
-            let roots: Vec<OrientedBox> = (0..8).into_par_iter().map(|r| self.make(TileKey::root(r)).bounds).collect();
+            let roots: Vec<OrientedBox> =
+                (0..8).into_par_iter().map(|r| self.content(TileKey::root(r)).bounds).collect();
             OrientedBox::fit(roots.iter().flat_map(|b| b.corners()), [DVec3::X, DVec3::Y, DVec3::Z], 0.0)
         })
     }
@@ -168,12 +170,7 @@ impl PlanetTiles {
         if let Some(p) = self.placements.lock().expect("placements lock").get(&key) {
             return *p;
         }
-        self.content(key);
-        self.placements.lock().expect("placements lock").get(&key).copied().unwrap_or_else(|| {
-            // Forgotten at once by a full memory: place it again from its content.
-            let content = self.content(key);
-            Placement { origin: content.origin(), bounds: content.bounds.nested_in(&self.parent_bounds(key)) }
-        })
+        self.place(key, &self.content(key))
     }
 
     /// Makes the placements of `keys` (parents before children), their contents in parallel;
@@ -191,20 +188,22 @@ impl PlanetTiles {
                     self.placement(parent);
                 }
             }
-            let contents: Vec<(TileKey, Vec<u8>)> = todo.par_iter().map(|&k| (k, self.content(k).glb)).collect();
+            let contents: Vec<(TileKey, Vec<u8>)> = todo.par_iter().map(|&k| (k, self.placed_content(k).glb)).collect();
             made.extend(contents);
         }
         made
     }
 
-    /// Records the placement of a content just made (its parent's placement is made first).
-    fn remember(&self, key: TileKey, content: &TileContent) {
-        let bounds = content.bounds.nested_in(&self.parent_bounds(key));
+    /// Places a content just made (its parent's placement is made first) and remembers it.
+    fn place(&self, key: TileKey, content: &TileContent) -> Placement {
+        let placement =
+            Placement { origin: content.origin(), bounds: content.bounds.nested_in(&self.parent_bounds(key)) };
         let mut memo = self.placements.lock().expect("placements lock");
         if memo.len() >= MAX_PLACEMENTS {
             memo.clear();
         }
-        memo.insert(key, Placement { origin: content.origin(), bounds });
+        memo.insert(key, placement);
+        placement
     }
 
     fn parent_bounds(&self, key: TileKey) -> OrientedBox {

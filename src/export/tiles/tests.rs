@@ -223,7 +223,7 @@ fn contents_and_files_are_deterministic() {
 fn tile_vertices_are_the_vertices_of_a_view() {
     use crate::adapt::{Adapter, Camera};
     let t = tiles();
-    let key = TileKey::root(0).child(1).child(2).child(0);
+    let key = TileKey::root(0).child(1).child(2).child(0).child(3);
     let c = t.content(key);
     let r = t.params.radius_m;
     let top = c.surface.vertices.iter().map(|v| v.p().length()).fold(r, f64::max);
