@@ -103,7 +103,8 @@ impl Camera {
         Ok((cam, rest))
     }
 
-    /// Builds and validates a camera; `up` defaults to north projected across the view.
+    /// Builds and validates a camera; `up` defaults to the local vertical across the view (north
+    /// for views straight down), see `default_up`.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         eye: DVec3,
@@ -181,10 +182,16 @@ impl Camera {
     }
 }
 
-/// North projected across the view direction; near the poles, the direction away from the
-/// planet centre.
+/// The default image up: the local vertical (away from the planet centre) projected across the
+/// view, so ground views keep the horizon level; where the view is within about 6 degrees of
+/// straight down or up (orbit views of the planet's centre), north projected across the view.
 fn default_up(eye: DVec3, fwd: DVec3) -> DVec3 {
-    for cand in [DVec3::Z, eye.normalize(), DVec3::X] {
+    let vertical = eye.normalize_or(DVec3::Z);
+    let level = vertical - fwd * vertical.dot(fwd);
+    if level.length() > 0.1 {
+        return level.normalize();
+    }
+    for cand in [DVec3::Z, DVec3::X] {
         let u = cand - fwd * cand.dot(fwd);
         if u.length() > 1e-3 {
             return u.normalize();
