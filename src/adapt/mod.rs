@@ -45,6 +45,29 @@ pub struct AdaptStats {
     pub converged: bool,
     /// Factor applied to the target pixel sizes to respect `max_faces` (1 = not limited).
     pub lod_scale: f64,
+    /// Wall time per stage, milliseconds.
+    pub stage_ms: StageTimes,
+}
+
+/// Wall time of each adaption stage (`AdaptStats::stage_ms`), milliseconds.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct StageTimes {
+    /// State update: split wishes of every edge, then of the edges splits touched.
+    pub state: f64,
+    /// Split-list compaction: blocker chains to the ready edges.
+    pub select: f64,
+    /// Edge splits (new vertices, then topology).
+    pub split: f64,
+    /// Collapse marks (demanded edges, candidates) and vertex collapses.
+    pub collapse: f64,
+    /// Buffer compaction after collapses.
+    pub compact: f64,
+}
+
+/// Adds the time since `t` to `slot` and restarts `t`.
+fn lap(t: &mut Instant, slot: &mut f64) {
+    *slot += t.elapsed().as_secs_f64() * 1000.0;
+    *t = Instant::now();
 }
 
 /// Keeps a mesh between cameras (the paper's frame-to-frame mode).
@@ -167,25 +190,33 @@ impl Adapter {
     /// after a pass that collapsed something (coarsening unwinds level by level), and before
     /// convergence is declared.
     fn run(&mut self, view: &View, cap: Option<usize>, stats: &mut AdaptStats) -> bool {
+        let mut t = Instant::now();
         let mut wants = state::edge_wants(&self.mesh, view);
+        lap(&mut t, &mut stats.stage_ms.state);
         let mut look_for_collapses = true;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
             // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
             let over_cap = cap.is_some_and(|c| self.mesh.faces.len() > c);
             let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
+            lap(&mut t, &mut stats.stage_ms.select);
             let splits = split::apply_splits(&mut self.mesh, &ready, &self.params);
+            lap(&mut t, &mut stats.stage_ms.split);
             if splits > 0 {
                 state::update_wants(&self.mesh, view, &mut wants, &ready);
+                lap(&mut t, &mut stats.stage_ms.state);
             }
             let mut collapses = 0;
             if look_for_collapses || splits == 0 {
                 let demanded = state::demanded(&self.mesh, &wants);
                 let sites = state::collapse_candidates(&self.mesh, view, &demanded);
                 collapses = collapse::apply_collapses(&mut self.mesh, &sites);
+                lap(&mut t, &mut stats.stage_ms.collapse);
                 if collapses > 0 {
                     compact::compact(&mut self.mesh);
+                    lap(&mut t, &mut stats.stage_ms.compact);
                     wants = state::edge_wants(&self.mesh, view);
+                    lap(&mut t, &mut stats.stage_ms.state);
                 }
             }
             look_for_collapses = collapses > 0;

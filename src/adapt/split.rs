@@ -6,30 +6,43 @@ use crate::mesh::altitude::split_vertex;
 use crate::mesh::{EdgeKind, Mesh, SplitSite, Vertex};
 use crate::params::Params;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 
-/// Follows the blocking refinement edges from edge `e` (newest-vertex bisection closure),
-/// calling `visit` on each edge of the chain; returns the last one, which is ready to split.
-pub fn blocker_chain(mesh: &Mesh, e: u32, mut visit: impl FnMut(u32)) -> u32 {
-    let mut x = e;
-    loop {
-        visit(x);
-        let b = mesh.blocking_edge(x);
-        if b == x {
-            return x;
-        }
-        x = b;
-    }
+/// Follows the blocker chain of every wanted edge. A chain stops where it meets an edge another
+/// chain already reached (an atomic flag per edge): the rest of that chain is walked once, by
+/// whoever reached it first, so chains that merge cost their shared part once. Returns, sorted
+/// and without repeats, every edge on a chain (`all`) or only the chain ends, which are ready.
+pub fn wanted_chains(mesh: &Mesh, wants: &[bool], all: bool) -> Vec<u32> {
+    let wanted: Vec<u32> = wants.iter().enumerate().filter(|(_, &w)| w).map(|(e, _)| e as u32).collect();
+    let seen: Vec<AtomicBool> = std::iter::repeat_with(|| AtomicBool::new(false)).take(mesh.edges.len()).collect();
+    let mut list: Vec<u32> = wanted
+        .par_iter()
+        .flat_map_iter(|&e| {
+            let mut found = Vec::new();
+            let mut x = e;
+            while !seen[x as usize].swap(true, Ordering::Relaxed) {
+                let b = mesh.blocking_edge(x);
+                if all || b == x {
+                    found.push(x);
+                }
+                if b == x {
+                    break;
+                }
+                x = b;
+            }
+            found
+        })
+        .collect();
+    list.par_sort_unstable();
+    list.dedup();
+    list
 }
 
 /// The edges to split this pass: every wanted edge that is the refinement edge of both its
 /// faces, and for the others the refinement edge that blocks them (followed until one is
 /// ready). Sorted and without repeats, so the pass is deterministic.
 pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
-    let mut list: Vec<u32> =
-        wants.par_iter().enumerate().filter(|(_, &w)| w).map(|(e, _)| blocker_chain(mesh, e as u32, |_| {})).collect();
-    list.par_sort_unstable();
-    list.dedup();
-    list
+    wanted_chains(mesh, wants, false)
 }
 
 /// Splits the given ready edges; each owns its two faces, so the new vertices are computed in

@@ -39,16 +39,7 @@ pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[
 /// edge on their blocking chains. A vertex whose faces hold such an edge must not collapse, or a
 /// forced split would be undone as soon as it is made.
 pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
-    let chains: Vec<u32> = wants
-        .par_iter()
-        .enumerate()
-        .filter(|(_, &w)| w)
-        .flat_map_iter(|(e, _)| {
-            let mut chain = Vec::new();
-            super::split::blocker_chain(mesh, e as u32, |x| chain.push(x));
-            chain
-        })
-        .collect();
+    let chains = super::split::wanted_chains(mesh, wants, true);
     let mut out = wants.to_vec();
     for e in chains {
         out[e as usize] = true;
