@@ -168,3 +168,41 @@ fn shots_parse_the_sun_and_reject_bad_values() {
     assert_eq!("JPG".parse::<ImageFormat>(), Ok(ImageFormat::Jpeg));
     assert!("gif".parse::<ImageFormat>().is_err());
 }
+
+#[test]
+fn one_metre_above_the_ground_the_near_ground_and_the_sky_are_drawn() {
+    let (planet, params) = earth();
+    let mesh = &planet.mesh;
+    // A dry land vertex in the Sahara; the eye 1 m above it, looking at the horizon ahead.
+    let v = mesh
+        .vertices
+        .iter()
+        .filter(|v| !v.submerged() && v.flags.contains(VertexFlags::CONTINENT))
+        .min_by(|a, b| {
+            a.p()
+                .normalize()
+                .distance(direction(22.0, 12.0))
+                .total_cmp(&b.p().normalize().distance(direction(22.0, 12.0)))
+        })
+        .unwrap();
+    let up = v.p().normalize();
+    let east = DVec3::Z.cross(up).normalize();
+    let eye = v.p() + up * 1.0;
+    let target = eye + east * 1000.0 - up * 20.0;
+    let q = format!(
+        "eye={},{},{}&target={},{},{}&width=160&height=120&fov=60",
+        eye.x, eye.y, eye.z, target.x, target.y, target.z
+    );
+    let shot = Shot { camera: Camera::parse_query(&q, params.radius_m).unwrap().0, sun: Some(up) };
+    let img = snapshot(renderer(), mesh, params, &shot, 300_000).unwrap();
+    let cam = &shot.camera;
+    // The bottom row is ground right under the eye (not clipped by the near plane), the top row
+    // is sky; every pixel is one or the other, no holes to space.
+    for x in (0..160).step_by(8) {
+        let [r, g, b] = rgb(&img, cam, (x, 119));
+        assert!(r >= b, "ground at ({x}, 119): {r},{g},{b}");
+        let [r, g, b] = rgb(&img, cam, (x, 0));
+        assert!(b > r + 30, "sky at ({x}, 0): {r},{g},{b}");
+    }
+    assert!(img.chunks_exact(4).all(|p| p[0] as u32 + p[1] as u32 + p[2] as u32 > 60), "no black pixels");
+}
