@@ -1,6 +1,7 @@
 //! The HTTP service (`riverworld serve`): planets created from a seed or an uploaded map, built
-//! in the background by a worker pool, and served as view-dependent glTF, GeoJSON rivers and
-//! equirectangular rasters. `openapi.yaml` at the repository root describes every route.
+//! in the background by a worker pool, and served as view-dependent glTF, GeoJSON rivers,
+//! equirectangular rasters and 3D Tiles, with a web viewer at `/` ([`viewer`]). `openapi.yaml`
+//! at the repository root describes every route.
 //!
 //! Only inputs are stored (see [`store`]); a planet's mesh and every file rendered from it are
 //! caches, rebuilt on demand, because the same inputs always give the same bytes. The built-in
@@ -20,6 +21,7 @@ pub mod snapshot;
 pub mod state;
 pub mod store;
 pub mod tiles;
+pub mod viewer;
 
 use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{header, HeaderMap, HeaderValue, Method, StatusCode, Version};
@@ -247,10 +249,15 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .max_age(Duration::from_secs(86_400));
     let textual = |_: StatusCode, _: Version, h: &HeaderMap, _: &axum::http::Extensions| {
         let ct = h.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
-        ["application/json", "application/geo+json", "application/yaml", "text/"].iter().any(|t| ct.starts_with(t))
+        ["application/json", "application/geo+json", "application/yaml", "application/javascript", "text/"]
+            .iter()
+            .any(|t| ct.starts_with(t))
     };
     let compression = CompressionLayer::new().compress_when(SizeAbove::new(256).and(textual));
     Ok(Router::new()
+        .route("/", get(viewer::index))
+        .route("/planets/{id}", get(viewer::planet))
+        .route("/assets/viewer.js", get(viewer::script))
         .route("/healthz", get(healthz))
         .route("/readyz", get(readyz))
         .route("/metrics", get(metrics_text))
