@@ -182,7 +182,7 @@ impl PlanetRequest {
             // A number out of range (1e999) stops the parse inside a field: name that field.
             let mut de = serde_json::Deserializer::from_str(text);
             let field = match serde_path_to_error::deserialize::<_, PlanetRequest>(&mut de) {
-                Err(pe) if pe.path().to_string() != "." => pe.path().to_string(),
+                Err(pe) if !matches!(pe.path().to_string().as_str(), "." | "") => pe.path().to_string(),
                 _ => "body".to_string(),
             };
             ParamError { field, message: e.to_string() }
@@ -193,7 +193,7 @@ impl PlanetRequest {
         let req: PlanetRequest = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
-            let field = if path == "." { "body".to_string() } else { path };
+            let field = if path == "." || path.is_empty() { "body".to_string() } else { path };
             ParamError { field, message: inner.to_string() }
         })?;
         req.params.validate()?;

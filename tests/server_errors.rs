@@ -208,6 +208,8 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
         (r#"{"seed": -1}"#, "seed"),
         (r#"{"seed": 1.5}"#, "seed"),
         (r#"{"seed": 18446744073709551616}"#, "seed"),
+        (r#"{""seedparams"m{"seed"#, "body"),
+        (r#"{"": 1}"#, "body"),
     ] {
         let err = expect_error(s.post_json(body).await, 422, "invalid_params").await;
         assert_eq!(err["field"], field, "{body}: {err}");
@@ -233,6 +235,8 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
         ("eye=0,0,2e7&target=0,0,0&width=99999999999999999999", "invalid_camera", "width"),
         ("eye=0,0,2e7&target=0,0,0&max_faces=1e9", "invalid_parameter", "max_faces"),
         ("eye=0,0,2e7&target=0,0,0&max_faces=-1", "invalid_parameter", "max_faces"),
+        ("eye=0,8e6,1e206&target=5,0,1", "invalid_camera", "eye"),
+        ("eye=0,0,2e7&target=0,0,0&up=1e300,0,0", "invalid_camera", "up"),
     ] {
         let err = expect_error(s.get(&format!("{view}?{query}")).await, 422, code).await;
         assert_eq!(err["field"], field, "{query}");

@@ -25,6 +25,9 @@ pub const DEFAULT_WATER_PX: f64 = 40.0;
 pub const HORIZON_HEIGHT: f64 = 20_000.0;
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 8192;
+/// Largest accepted coordinate magnitude, metres (about 7 AU): lengths and normals of vectors
+/// this large are still exact enough, where 1e200 would overflow to infinity.
+pub const MAX_COORD: f64 = 1e12;
 
 /// A validated camera.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,6 +64,9 @@ fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
         v[i] = p.parse::<f64>().map_err(|_| err(field, format!("{p:?} is not a number")))?;
         if !v[i].is_finite() {
             return Err(err(field, format!("{p:?} is not finite")));
+        }
+        if v[i].abs() > MAX_COORD {
+            return Err(err(field, format!("{p:?} is out of range (at most {MAX_COORD:e} m in magnitude)")));
         }
     }
     Ok(DVec3::from_array(v))
