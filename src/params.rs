@@ -182,7 +182,14 @@ impl PlanetRequest {
             // A number out of range (1e999) stops the parse inside a field: name that field.
             let mut de = serde_json::Deserializer::from_str(text);
             let field = match serde_path_to_error::deserialize::<_, PlanetRequest>(&mut de) {
-                Err(pe) if !matches!(pe.path().to_string().as_str(), "." | "") => pe.path().to_string(),
+                _ if e.is_eof() => "body".to_string(),
+                // Only a path into the object names a field; an array body or the root is the body.
+                Err(pe)
+                    if !matches!(pe.path().to_string().as_str(), "." | "")
+                        && !pe.path().to_string().starts_with('[') =>
+                {
+                    pe.path().to_string()
+                }
                 _ => "body".to_string(),
             };
             ParamError { field, message: e.to_string() }
