@@ -54,7 +54,7 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
                 faces = a.adapt(&shot.camera, Some(FACES)).faces;
                 let adapt = ms(t0);
                 let t1 = Instant::now();
-                let s = scene::prepare(a.mesh(), p, &shot.camera, scene::default_sun(&shot.camera), 6000.0);
+                let s = scene::prepare(a.mesh(), p, &shot.camera, scene::default_sun(&shot.camera));
                 let prepare = ms(t1);
                 let t2 = Instant::now();
                 let px = renderer.draw(&s, p.climate, w, h).expect("benchmark render");

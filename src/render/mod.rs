@@ -127,7 +127,7 @@ pub fn shared() -> Result<&'static Renderer, RenderError> {
 /// Draws an already adapted `mesh` for `shot`; tightly packed sRGB RGBA8 rows.
 pub fn draw(renderer: &Renderer, mesh: &Mesh, params: &Params, shot: &Shot) -> Result<Vec<u8>, RenderError> {
     let cam = &shot.camera;
-    let scene = scene::prepare(mesh, params, cam, shot.sun_direction(), crate::export::climate::DEEPEST_M);
+    let scene = scene::prepare(mesh, params, cam, shot.sun_direction());
     renderer.draw(&scene, params.climate, cam.width, cam.height)
 }
 

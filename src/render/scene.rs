@@ -108,7 +108,7 @@ pub fn view_projection(cam: &Camera) -> DMat4 {
 }
 
 /// Prepares `mesh` (ground altitudes above the base sphere) for drawing from `cam`.
-pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3, water_depth_max: f64) -> Scene {
+pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene {
     let normals = crate::export::surface_normals(mesh);
     let levels = water_levels(mesh);
     let sea = params.sea_level_m;
@@ -154,7 +154,8 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3, water_dep
             crate::export::climate::TEXTURE_MIN_ALTITUDE_M as f32,
             (crate::export::climate::TEXTURE_MAX_ALTITUDE_M - crate::export::climate::TEXTURE_MIN_ALTITUDE_M) as f32,
             HAZE_M as f32,
-            water_depth_max as f32,
+            // The depth at which the water ramp texture (built from `water_colour`) ends.
+            crate::export::climate::DEEPEST_M as f32,
         ],
         sky: [SKY_M as f32, 0.0, 0.0, 0.0],
     };
@@ -200,7 +201,7 @@ mod tests {
         let p = Params { base_faces: 2000, ..Params::default() };
         let eye = DVec3::new(p.radius_m * 3.0, 0.0, 0.0);
         let cam = camera(eye, DVec3::ZERO);
-        let s = prepare(&planet.mesh, &p, &cam, default_sun(&cam), 6000.0);
+        let s = prepare(&planet.mesh, &p, &cam, default_sun(&cam));
         assert_eq!(s.vertices.len(), planet.mesh.vertices.len());
         assert_eq!(s.terrain.len(), planet.mesh.faces.len() * 3);
         assert!(!s.water.is_empty() && s.water.len() < s.terrain.len());
