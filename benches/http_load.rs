@@ -6,12 +6,16 @@
 //! - cold view latency: the first request for each of a few new cameras, one at a time;
 //! - cached `view.glb` for a fixed camera, `--connections` concurrent connections;
 //! - cached `rivers.geojson`, the same way;
-//! - a mix for `--duration` seconds: planet records and the list, views, rivers, rasters and a
-//!   few (idempotent) planet POSTs;
+//! - a mix for `--duration` seconds: planet records and the list, views, rivers, rasters, cached
+//!   3D tiles, renders (one cached camera, one camera that moves with every request, so it is
+//!   drawn each time or refused with 429 when the render permits are taken) and a few
+//!   (idempotent) planet POSTs;
 //! - 3D Tiles (`http_load/tiles.rs`): cold tile latency and size per level, cached tiles.
 //!
 //! For each: requests/s, p50/p99/max latency, 5xx and other non-2xx answers, and the server's
-//! peak resident memory (VmHWM from /proc/PID/status) after the phase.
+//! peak resident memory (VmHWM from /proc/PID/status) after the phase. The run fails (exit 1)
+//! if any answer was a 5xx or the peak exceeds `--max-rss-mib` (default 1024: the bound that
+//! SECURITY.md documents for the default settings).
 //!
 //! ```sh
 //! cargo bench --bench http_load                                 # 64 connections, 20 s + 20 s + 60 s
@@ -27,6 +31,7 @@ use std::process::{Child, Command, Stdio};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+const RENDER: &str = "eye=2e7,1e7,5e6&target=0,0,0&width=640&height=360";
 const VIEW: &str = "eye=7e6,0,3e6&target=0,0,0&width=1280&height=720&max_faces=200000";
 
 struct Args {
@@ -34,10 +39,11 @@ struct Args {
     phase: f64,
     duration: f64,
     tiles_only: bool,
+    max_rss_mib: f64,
 }
 
 fn args() -> Args {
-    let mut a = Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false };
+    let mut a = Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false, max_rss_mib: 1024.0 };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
         let mut value = || it.next().and_then(|v| v.parse::<f64>().ok()).unwrap_or_else(|| usage(&arg));
@@ -46,6 +52,7 @@ fn args() -> Args {
             "--phase" => a.phase = value(),
             "--duration" => a.duration = value(),
             "--tiles-only" => a.tiles_only = true,
+            "--max-rss-mib" => a.max_rss_mib = value(),
             "--bench" => {}
             _ => usage(&arg),
         }
@@ -54,7 +61,7 @@ fn args() -> Args {
 }
 
 fn usage(arg: &str) -> ! {
-    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only");
+    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only --max-rss-mib MIB");
     std::process::exit(2)
 }
 
@@ -118,7 +125,8 @@ impl Server {
     }
 }
 
-/// One request of a load: method, path and body (POST bodies are JSON).
+/// One request of a load: method, path and body (POST bodies are JSON). A `{n}` in the path is
+/// replaced by a number that differs between requests (a new camera each time).
 #[derive(Clone)]
 struct Req {
     post: Option<&'static str>,
@@ -129,8 +137,12 @@ fn get(path: impl Into<String>) -> Req {
     Req { post: None, path: path.into() }
 }
 
+/// Requests sent so far, for `{n}` in paths.
+static SENT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
 async fn send(client: &reqwest::Client, base: &str, req: &Req) -> (u16, usize) {
-    let url = format!("{base}{}", req.path);
+    let n = SENT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let url = format!("{base}{}", req.path.replace("{n}", &n.to_string()));
     let builder = match req.post {
         Some(body) => client.post(url).header("content-type", "application/json").body(body),
         None => client.get(url),
@@ -138,6 +150,10 @@ async fn send(client: &reqwest::Client, base: &str, req: &Req) -> (u16, usize) {
     match builder.send().await {
         Ok(res) => {
             let status = res.status().as_u16();
+            if req.path.contains("/render.") {
+                let counter = if status == 200 { &RENDERS[0] } else { &RENDERS[1] };
+                counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            }
             let len = res.bytes().await.map(|b| b.len()).unwrap_or(0);
             (status, len)
         }
@@ -199,6 +215,7 @@ async fn gather(tasks: Vec<tokio::task::JoinHandle<Outcome>>, start: Instant) ->
         let o = t.await.expect("load task");
         all.latencies_us.extend(o.latencies_us);
         all.server_errors += o.server_errors;
+        SERVER_ERRORS.fetch_add(o.server_errors, std::sync::atomic::Ordering::Relaxed);
         all.refused += o.refused;
         all.bytes += o.bytes;
     }
@@ -298,10 +315,17 @@ fn main() {
             get("/v1/planets/earth/landmask.png?width=256"),
             get("/healthz"),
             rivers.clone(),
+            get("/v1/planets/earth/tiles/0.glb"),
+            get("/v1/planets/earth/tiles/5.glb"),
+            get("/v1/planets/earth/tiles/312.glb"),
+            get("/v1/planets/earth/tiles/6013.glb"),
+            get("/v1/planets/earth/tileset.json"),
+            get(format!("/v1/planets/earth/render.png?{RENDER}")),
         ];
         for req in &mix {
             warm(&client, &base, req).await;
         }
+        mix.push(get(format!("/v1/planets/earth/render.jpg?{RENDER}&sun=1,{{n}},0")));
         mix.extend(mix.clone());
         // A few POSTs: the first of each builds a planet, the repeats answer the existing one.
         let posts: [&'static str; 3] = [
@@ -321,8 +345,29 @@ fn main() {
         println!("{}", row(&format!("cached view.glb, {:.0} s", args.phase), &o, server.peak_rss_mib()));
         let o = load(&base, args.connections, args.phase, std::slice::from_ref(&rivers)).await;
         println!("{}", row(&format!("cached rivers.geojson, {:.0} s", args.phase), &o, server.peak_rss_mib()));
+        let before = RENDERS.each_ref().map(|c| c.load(std::sync::atomic::Ordering::Relaxed));
         let o = load(&base, args.connections, args.duration, &mix).await;
         println!("{}", row(&format!("mixed ({} kinds), {:.0} s", mix.len(), args.duration), &o, server.peak_rss_mib()));
+        let [drawn, refused] = RENDERS.each_ref().map(|c| c.load(std::sync::atomic::Ordering::Relaxed));
+        println!(
+            "\nrenders in the mix: {} answered 200 (cached or drawn), {} refused (429, permits taken)",
+            drawn - before[0],
+            refused - before[1]
+        );
         tiles::run(&server, args.connections, args.phase).await;
     });
+    let peak = server.peak_rss_mib();
+    let errors = SERVER_ERRORS.load(std::sync::atomic::Ordering::Relaxed);
+    println!("\npeak RSS {peak:.0} MiB (bound {:.0} MiB), {errors} answers 5xx", args.max_rss_mib);
+    if errors > 0 || peak.is_nan() || peak > args.max_rss_mib {
+        eprintln!("http_load: FAILED");
+        std::process::exit(1);
+    }
 }
+
+/// Render requests answered 200, and otherwise (429 when the render permits are taken).
+static RENDERS: [std::sync::atomic::AtomicUsize; 2] =
+    [std::sync::atomic::AtomicUsize::new(0), std::sync::atomic::AtomicUsize::new(0)];
+
+/// 5xx answers over every phase.
+static SERVER_ERRORS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);

@@ -3,8 +3,10 @@
 //! `maps -> build -> mesh -> adapt -> export / render -> server`.
 
 pub mod adapt;
+#[cfg(feature = "service")]
 pub mod bench;
 pub mod bench_adapt;
+#[cfg(feature = "service")]
 pub mod bench_render;
 pub mod build;
 pub mod export;
@@ -12,6 +14,8 @@ pub mod generate;
 pub mod maps;
 pub mod mesh;
 pub mod params;
+#[cfg(feature = "service")]
 pub mod render;
 pub mod rng;
+#[cfg(feature = "service")]
 pub mod server;

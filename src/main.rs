@@ -79,6 +79,11 @@ enum Command {
         /// Print adaption statistics as JSON.
         #[arg(long)]
         stats: bool,
+        /// Where adaption runs: cpu (rayon), gpu (wgpu compute; the state update so far, the
+        /// other stages on the CPU) or auto (the GPU when the adapter is a real GPU with f64 in
+        /// shaders, else the CPU). The choice is printed on stderr; the mesh is the same.
+        #[arg(long, default_value = "auto", value_parser = parse_backend)]
+        backend: riverworld::adapt::gpu::Backend,
     },
     /// Adapt the planet to a camera and draw it with wgpu: climate-coloured terrain, water,
     /// sun light, haze and sky. The image size is the camera's width and height.
@@ -238,6 +243,10 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
     })
 }
 
+fn parse_backend(s: &str) -> Result<riverworld::adapt::gpu::Backend, String> {
+    s.parse()
+}
+
 fn parse_format(s: &str) -> Result<riverworld::render::ImageFormat, String> {
     s.parse()
 }
@@ -319,6 +328,7 @@ fn run_view(
     max_faces: Option<usize>,
     out: &std::path::Path,
     stats: bool,
+    backend: riverworld::adapt::gpu::Backend,
 ) -> Result<(), String> {
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let radius = spec.params.radius_m;
@@ -331,10 +341,16 @@ fn run_view(
         return Err("--max-faces must be at least 1".into());
     }
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    let mut adapter = riverworld::adapt::Adapter::new(built.mesh, spec.params.clone());
+    let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
+    eprintln!("riverworld: {choice}");
+    let on_gpu = gpu.is_some();
+    let mut adapter = riverworld::adapt::Adapter::new(built.mesh, spec.params.clone()).with_gpu(gpu);
     let mut last = None;
     for cam in &cams {
         last = Some(adapter.adapt(cam, max_faces));
+    }
+    if on_gpu && !adapter.on_gpu() {
+        eprintln!("riverworld: the GPU failed during adaption; it finished on the CPU");
     }
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
@@ -410,8 +426,8 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::View { planet, cameras, max_faces, out, stats } => {
-            match run_view(&planet, &cameras, max_faces, &out, stats) {
+        Command::View { planet, cameras, max_faces, out, stats, backend } => {
+            match run_view(&planet, &cameras, max_faces, &out, stats, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");

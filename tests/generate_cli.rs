@@ -199,7 +199,7 @@ fn bad_input_is_refused_with_exit_code_2() {
 fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     let dir = scratch("view");
     let cam = "eye=6500000,0,400000&target=6374000,0,300000&width=320&height=180&land_px=6";
-    let run_view = |out: &Path| {
+    let run_view = |out: &Path, backend: &str| {
         run(&[
             "view",
             "--faces",
@@ -211,18 +211,27 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
             "--out",
             out.to_str().unwrap(),
             "--stats",
+            "--backend",
+            backend,
         ])
     };
-    let (a, b) = (dir.join("a.glb"), dir.join("b.glb"));
-    let o = run_view(&a);
+    let (a, b, g) = (dir.join("a.glb"), dir.join("b.glb"), dir.join("g.glb"));
+    let o = run_view(&a, "cpu");
+    assert!(String::from_utf8_lossy(&o.stderr).contains("adaption on the CPU (--backend cpu)"));
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(stats["faces"].as_u64().unwrap() > 2000 && stats["faces"].as_u64().unwrap() <= 100_000, "{stats}");
     assert_eq!(stats["converged"], true);
-    assert!(run_view(&b).status.success());
+    assert!(run_view(&b, "auto").status.success());
     let bytes = std::fs::read(&a).unwrap();
     assert_eq!(&bytes[..4], b"glTF");
     assert!(bytes == std::fs::read(&b).unwrap(), "view.glb differs between runs");
+    // The wgpu compute backend (lavapipe in CI) writes the same bytes.
+    let o = run_view(&g, "gpu");
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && log.contains("adaption on the GPU"), "{log}");
+    assert!(bytes == std::fs::read(&g).unwrap(), "view.glb differs between the CPU and GPU backends");
+    refused(&["view", "--faces", "200", "--camera", cam, "--backend", "cuda"], "cpu, gpu or auto");
     for (bad, needle) in [
         ("eye=0,0,100&target=0,0,0", "inside the planet"),
         ("eye=0,0,1e7&target=0,0,1e7", "equals the eye"),

@@ -240,15 +240,15 @@ fn percent_decode(s: &str) -> String {
 pub struct View {
     pub eye: DVec3,
     /// Inward normals of the four side planes of the frustum (through the eye).
-    planes: [DVec3; 4],
+    pub(crate) planes: [DVec3; 4],
     /// Split when `lod_len / distance > c`.
     pub c_land: f64,
     pub c_water: f64,
     /// Scale for the eq. 6 falloff: the tangent of the half vertical field of view.
-    falloff: f64,
+    pub(crate) falloff: f64,
     /// Horizon plane: a ball whose support along `eye_dir` is below this is behind the horizon.
-    eye_dir: DVec3,
-    horizon: f64,
+    pub(crate) eye_dir: DVec3,
+    pub(crate) horizon: f64,
     /// Never split edges shorter than twice this.
     pub min_len: f64,
 }

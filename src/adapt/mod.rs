@@ -15,6 +15,8 @@
 pub mod camera;
 pub mod collapse;
 pub mod compact;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod split;
 pub mod state;
 
@@ -79,12 +81,54 @@ pub struct Adapter {
     base: Mesh,
     /// Step of the last budget search (see [`Adapter::fit_budget`]).
     last_step: i32,
+    /// The device for the stages that run on the GPU backend; `None` on the CPU backend.
+    #[cfg(feature = "gpu")]
+    gpu: Option<std::sync::Arc<gpu::GpuAdaption>>,
 }
 
 impl Adapter {
     /// Starts from a base mesh.
     pub fn new(base: Mesh, params: Params) -> Adapter {
-        Adapter { mesh: base.clone(), params, base, last_step: 0 }
+        Adapter {
+            mesh: base.clone(),
+            params,
+            base,
+            last_step: 0,
+            #[cfg(feature = "gpu")]
+            gpu: None,
+        }
+    }
+
+    /// Runs the stages the GPU backend has on `gpu` (`None`: everything on the CPU).
+    #[cfg(feature = "gpu")]
+    pub fn with_gpu(mut self, gpu: Option<std::sync::Arc<gpu::GpuAdaption>>) -> Adapter {
+        self.gpu = gpu;
+        self
+    }
+
+    /// Whether stages run on the GPU (false after a device failure fell back to the CPU).
+    pub fn on_gpu(&self) -> bool {
+        #[cfg(feature = "gpu")]
+        return self.gpu.is_some();
+        #[cfg(not(feature = "gpu"))]
+        false
+    }
+
+    /// The state update's split wishes of every edge, on the GPU backend when there is one. A
+    /// device failure (lost, out of memory, a mesh beyond its buffer limits) falls back to the
+    /// CPU for the rest of this adapter's life and says so in the log.
+    fn edge_wants(&mut self, view: &View) -> Vec<bool> {
+        #[cfg(feature = "gpu")]
+        if let Some(g) = &self.gpu {
+            match gpu::edge_wants(g, &self.mesh, view) {
+                Ok(w) => return w,
+                Err(e) => {
+                    tracing::warn!("GPU adaption failed ({e}); continuing on the CPU");
+                    self.gpu = None;
+                }
+            }
+        }
+        state::edge_wants(&self.mesh, view)
     }
 
     pub fn mesh(&self) -> &Mesh {
@@ -191,7 +235,7 @@ impl Adapter {
     /// convergence is declared.
     fn run(&mut self, view: &View, cap: Option<usize>, stats: &mut AdaptStats) -> bool {
         let mut t = Instant::now();
-        let mut wants = state::edge_wants(&self.mesh, view);
+        let mut wants = self.edge_wants(view);
         lap(&mut t, &mut stats.stage_ms.state);
         let mut look_for_collapses = true;
         for _ in 0..MAX_PASSES {
@@ -215,7 +259,7 @@ impl Adapter {
                 if collapses > 0 {
                     compact::compact(&mut self.mesh);
                     lap(&mut t, &mut stats.stage_ms.compact);
-                    wants = state::edge_wants(&self.mesh, view);
+                    wants = self.edge_wants(view);
                     lap(&mut t, &mut stats.stage_ms.state);
                 }
             }

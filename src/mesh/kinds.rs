@@ -10,7 +10,7 @@ pub enum FaceKind {
 
 /// Edges are sea, coast or continent from their two faces; continent edges may be rivers.
 #[repr(u8)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, bytemuck::NoUninit)]
 pub enum EdgeKind {
     Sea = 0,
     Coast = 1,
@@ -34,7 +34,7 @@ impl EdgeKind {
 
 /// A vertex has all the types of its incident edges (§3.2), as bits.
 #[repr(transparent)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit)]
 pub struct VertexFlags(pub u8);
 
 impl VertexFlags {

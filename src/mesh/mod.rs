@@ -29,7 +29,7 @@ pub const NONE: u32 = u32::MAX;
 
 /// One vertex (Table 3, "active vertices").
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
 pub struct Vertex {
     /// Position, planet-centred metres.
     pub pos: [f64; 3],
@@ -56,7 +56,7 @@ pub struct Vertex {
 
 /// One edge (Table 3, "active edges").
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
 pub struct Edge {
     /// End points. `f[0]` is the face that walks `v[0] -> v[1]` counter-clockwise.
     pub v: [u32; 2],

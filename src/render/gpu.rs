@@ -36,14 +36,8 @@ pub struct Renderer {
 impl Renderer {
     /// Opens the first adapter wgpu finds (`WGPU_BACKEND` and friends narrow the choice).
     pub fn new() -> Result<Renderer, RenderError> {
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::PRIMARY | wgpu::Backends::GL;
-        let instance = wgpu::Instance::new(desc.with_env());
-        let adapter = futures::executor::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            ..Default::default()
-        }))
-        .map_err(|e| RenderError::NoAdapter(e.to_string()))?;
+        let adapter = crate::adapt::gpu::open_adapter(wgpu::Backends::PRIMARY | wgpu::Backends::GL)
+            .map_err(RenderError::NoAdapter)?;
         let info = adapter.get_info();
         let limits = adapter.limits();
         let (device, queue) = futures::executor::block_on(adapter.request_device(&wgpu::DeviceDescriptor {

@@ -1,13 +1,16 @@
 // The web viewer in a real headless browser: starts `riverworld serve` (the built-in planet
 // `earth`), opens `/` in Chromium (software WebGL), waits until tiles are streamed and frames
-// drawn, checks the canvas is not blank and that the page logged no errors, then asks for a
-// render of the current camera.
+// drawn, checks the canvas is not blank and that the page logged no errors, asks for a render of
+// the current camera, then uploads files through the page's form: a text file the server refuses
+// (the page says why) and a small continent bitmap, whose build progress the page follows until
+// it streams the new planet's tiles.
 //
 //   node web/test/viewer.mjs [path/to/riverworld] [--chromium /usr/bin/chromium] [--shot out.png]
 import { spawn } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { deflateSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
 
 const args = process.argv.slice(2);
@@ -32,6 +35,41 @@ async function waitFor(what, seconds, probe) {
     if (Date.now() > end) fail(`timed out after ${seconds} s waiting for ${what}`);
     await sleep(250);
   }
+}
+
+// A grey PNG of `width` x `height` whose pixels are `value(x, y)` (0-255).
+function greyPng(width, height, value) {
+  const crcTable = Array.from({ length: 256 }, (_, n) => {
+    let c = n;
+    for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+    return c >>> 0;
+  });
+  const crc = (buf) => {
+    let c = 0xffffffff;
+    for (const b of buf) c = crcTable[(c ^ b) & 0xff] ^ (c >>> 8);
+    return (c ^ 0xffffffff) >>> 0;
+  };
+  const chunk = (type, body) => {
+    const out = Buffer.alloc(12 + body.length);
+    out.writeUInt32BE(body.length, 0);
+    out.write(type, 4, 'ascii');
+    body.copy(out, 8);
+    out.writeUInt32BE(crc(out.subarray(4, 8 + body.length)), 8 + body.length);
+    return out;
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(width, 0);
+  header.writeUInt32BE(height, 4);
+  header[8] = 8; // bit depth
+  header[9] = 0; // greyscale
+  const rows = Buffer.alloc((width + 1) * height);
+  for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) rows[y * (width + 1) + 1 + x] = value(x, y);
+  return Buffer.concat([
+    Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]),
+    chunk('IHDR', header),
+    chunk('IDAT', deflateSync(rows)),
+    chunk('IEND', Buffer.alloc(0)),
+  ]);
 }
 
 const data = mkdtempSync(join(tmpdir(), 'riverworld-viewer-'));
@@ -152,6 +190,49 @@ try {
   } else {
     fail(`render.png answered ${res.status()}`);
   }
+  if (problems.length) fail(`the page reported problems:\n${problems.join('\n')}`);
+
+  // The upload form. A file that is no image: the server answers 415 and the page says so.
+  const refused = page.waitForResponse((res) => res.url().endsWith('/v1/planets') && res.request().method() === 'POST');
+  await page.setInputFiles('#map', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('not an image at all') });
+  await page.click('#upload button[type=submit]');
+  const refusedStatus = (await refused).status();
+  if (refusedStatus !== 415) fail(`a text file uploaded as a map answered ${refusedStatus}, not 415`);
+  await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('upload failed: 415'));
+  console.log(`text file refused: ${await page.textContent('#status')}`);
+  await sleep(200);
+  problems.splice(0, problems.length, ...problems.filter((p) => !(p.includes('/v1/planets') || p.includes('status of 415'))));
+
+  // A continent bitmap: two round continents on a 128 x 64 equirectangular map.
+  const island = (x, y, cx, cy, r) => (x - cx) ** 2 + (y - cy) ** 2 < r * r;
+  const map = greyPng(128, 64, (x, y) => (island(x, y, 40, 28, 14) || island(x, y, 92, 38, 10) ? 255 : 0));
+  const accepted = page.waitForResponse((res) => res.url().endsWith('/v1/planets') && res.request().method() === 'POST');
+  await page.setInputFiles('#map', { name: 'islands.png', mimeType: 'image/png', buffer: map });
+  await page.selectOption('#map-kind', 'continents');
+  await page.click('#upload button[type=submit]');
+  const created = await (await accepted).json();
+  if (!created.id || created.id === 'earth') fail(`the upload answered ${JSON.stringify(created)}`);
+  console.log(`uploaded: planet ${created.id} (${created.status})`);
+  const progress = [];
+  await waitFor(`planet ${created.id} to build and open`, 300, async () => {
+    const s = await page.evaluate(() => ({
+      status: document.getElementById('status').textContent,
+      progress: document.getElementById('progress').value,
+      planet: window.viewerStats.planet,
+      url: location.pathname,
+    }));
+    progress.push(s.progress);
+    return s.planet === created.id && s.url === `/planets/${created.id}`;
+  });
+  if (progress.some((p, i) => i > 0 && p < progress[i - 1] && p !== 0)) fail(`progress went back: ${progress}`);
+  await waitFor('the new planet\'s tiles', 120, () =>
+    page.evaluate(() => window.viewerStats.tilesLoaded >= 8 && window.viewerStats.pending === 0),
+  );
+  const uploaded = await page.evaluate(() => ({ ...window.viewerStats }));
+  console.log(`new planet streamed after ${seconds()} s: ${JSON.stringify(uploaded)}`);
+  if (uploaded.errors) fail(`${uploaded.errors} tile load errors on the new planet`);
+  const listed = await (await fetch(`${base}/v1/planets/${created.id}`)).json();
+  if (listed.status !== 'ready') fail(`planet ${created.id} is ${listed.status}`);
   if (problems.length) fail(`the page reported problems:\n${problems.join('\n')}`);
   console.log(`viewer test passed in ${seconds()} s`);
 } finally {

@@ -1,0 +1,99 @@
+// State update (paper §5.1, Algorithm 1): the split wish of every edge for one view. The twin
+// of `src/adapt/state.rs` (`edge_wants`) and `View::wants_split` in `src/adapt/camera.rs`,
+// operation for operation and in the same order, in f64: positions are the mesh's own f64
+// planet-centred metres, so the eye-relative vector, and with it the decision, are those of
+// the CPU. The buffer layouts are `Vertex` and `Edge` of `src/mesh/mod.rs` and `GpuView` of
+// `src/adapt/gpu/state.rs`.
+
+struct Vertex {
+    pos: array<f64, 3>,
+    normal: array<f32, 3>,
+    ground: f32,
+    water: f32,
+    edge: u32,
+    parent_lod: array<f32, 2>,
+    seed: u32,
+    // flags (u8), level (u8), padding (u16)
+    bits: u32,
+}
+
+struct Edge {
+    v: array<u32, 2>,
+    f: array<u32, 2>,
+    length: f32,
+    lod_len: f32,
+    lod_radius: f32,
+    // level (u16), kind (u8), padding (u8)
+    bits: u32,
+}
+
+struct View {
+    eye: array<f64, 3>,
+    planes: array<array<f64, 3>, 4>,
+    eye_dir: array<f64, 3>,
+    horizon: f64,
+    c_land: f64,
+    c_water: f64,
+    falloff: f64,
+    min_len: f64,
+    c_lod: f64,
+    edges: u32,
+    row: u32,
+}
+
+@group(0) @binding(0) var<storage, read> vertices: array<Vertex>;
+@group(0) @binding(1) var<storage, read> edges: array<Edge>;
+@group(0) @binding(2) var<storage, read> view: View;
+@group(0) @binding(3) var<storage, read_write> wants: array<u32>;
+
+const KIND_SEA: u32 = 0u;
+
+fn position(v: u32) -> vec3<f64> {
+    let p = vertices[v].pos;
+    return vec3<f64>(p[0], p[1], p[2]);
+}
+
+fn triple(a: array<f64, 3>) -> vec3<f64> {
+    return vec3<f64>(a[0], a[1], a[2]);
+}
+
+// `(a.x * b.x + a.y * b.y) + a.z * b.z`, in that order (glam's dot).
+fn dot3(a: vec3<f64>, b: vec3<f64>) -> f64 {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+fn wants_split(lod_len: f64, centre: vec3<f64>, radius: f64, sea: bool) -> bool {
+    if lod_len < f64(2.0) * view.min_len {
+        return false;
+    }
+    // Back-face culling: the whole ball lies behind the horizon plane.
+    if dot3(centre, triple(view.eye_dir)) + radius < view.horizon {
+        return false;
+    }
+    let rel = centre - triple(view.eye);
+    let len = sqrt(dot3(rel, rel));
+    var d = max(len - radius, f64(1e-3));
+    var outside = f64(0.0);
+    for (var i = 0u; i < 4u; i++) {
+        outside = max(outside, -dot3(triple(view.planes[i]), rel) - radius);
+    }
+    let q = outside / (max(len + radius, f64(1e-3)) * view.falloff);
+    d = d * (f64(1.0) + view.c_lod * q * q); // eq. 6
+    var c = view.c_land;
+    if sea {
+        c = view.c_water;
+    }
+    return lod_len > c * d;
+}
+
+@compute @workgroup_size(256)
+fn edge_wants(@builtin(global_invocation_id) id: vec3<u32>) {
+    let e = id.x + id.y * view.row;
+    if e >= view.edges {
+        return;
+    }
+    let edge = edges[e];
+    let centre = (position(edge.v[0]) + position(edge.v[1])) * f64(0.5);
+    let sea = ((edge.bits >> 16u) & 0xffu) == KIND_SEA;
+    wants[e] = select(0u, 1u, wants_split(f64(edge.lod_len), centre, f64(edge.lod_radius), sea));
+}

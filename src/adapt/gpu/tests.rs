@@ -1,0 +1,138 @@
+//! The GPU backend against the CPU backend on one device (lavapipe in CI): the same decisions
+//! for every edge, and so the same adapted meshes, bit for bit.
+
+use super::*;
+use crate::adapt::{state, Adapter, Camera, View};
+use crate::build::{build_planet, Planet, PlanetSpec};
+use crate::mesh::Mesh;
+use crate::params::Params;
+use glam::DVec3;
+use proptest::prelude::*;
+use std::sync::OnceLock;
+
+const R: f64 = 6_371_000.0;
+
+fn planet() -> &'static Planet {
+    static P: OnceLock<Planet> = OnceLock::new();
+    P.get_or_init(|| {
+        let spec = PlanetSpec { seed: 7, params: Params { base_faces: 4000, ..Params::default() }, map: None };
+        build_planet(&spec, &mut |_, _| {}).unwrap()
+    })
+}
+
+fn gpu() -> Arc<GpuAdaption> {
+    static G: OnceLock<Arc<GpuAdaption>> = OnceLock::new();
+    G.get_or_init(|| {
+        let g = GpuAdaption::new().expect("a wgpu adapter with f64 (install mesa-vulkan-drivers for lavapipe)");
+        eprintln!("GPU backend on {}", g.describe());
+        Arc::new(g)
+    })
+    .clone()
+}
+
+fn view(cam: &Camera) -> View {
+    let p = Params::default();
+    View::new(cam, p.radius_m, p.min_edge_length_m)
+}
+
+/// Asserts that the device decides every edge of `mesh` as the CPU does.
+fn same_wants(mesh: &Mesh, cam: &Camera) {
+    let v = view(cam);
+    let cpu = state::edge_wants(mesh, &v);
+    let dev = edge_wants(&gpu(), mesh, &v).expect("the state update runs on the device");
+    assert_eq!(cpu.len(), dev.len());
+    let differ: Vec<usize> = (0..cpu.len()).filter(|&e| cpu[e] != dev[e]).collect();
+    assert!(
+        differ.is_empty(),
+        "{} of {} edges decided differently, e.g. {:?}",
+        differ.len(),
+        cpu.len(),
+        &differ[..differ.len().min(8)]
+    );
+}
+
+/// A camera `height` m above the ground at (lat, lon) looking `ahead` m along the ground to the north.
+fn ground(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
+    let sea = Params::default().sea_level_m;
+    let dir = crate::build::continents::direction(lat, lon);
+    let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
+    let eye = dir * (R + sea + height);
+    let target = (dir + north * (ahead / R)).normalize() * (R + sea);
+    Camera::new(eye, target, None, 60.0, 640, 360, px, px * 5.0, R).unwrap()
+}
+
+#[test]
+fn a_fly_through_adapts_to_the_same_meshes_on_both_backends() {
+    let sea = Params::default().sea_level_m;
+    let cams = crate::bench_adapt::fly_through(R, sea, 12.0, 30.0, 20);
+    let mut cpu = Adapter::new(planet().mesh.clone(), Params::default());
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    for (i, cam) in cams.iter().enumerate() {
+        // Decisions on the mesh of the previous camera, then the whole adaption.
+        same_wants(cpu.mesh(), cam);
+        let a = cpu.adapt(cam, Some(60_000));
+        let b = dev.adapt(cam, Some(60_000));
+        assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
+        assert_eq!(
+            (a.faces, a.splits, a.collapses, a.lod_scale),
+            (b.faces, b.splits, b.collapses, b.lod_scale),
+            "camera {i}"
+        );
+        assert!(cpu.mesh() == dev.mesh(), "camera {i}: the meshes differ");
+    }
+}
+
+#[test]
+fn metre_edges_by_the_eye_are_decided_alike_at_earth_radius() {
+    // Two metres above the base sphere (where the positions lie; altitudes are separate),
+    // half-pixel targets: edges in front of the eye come down to about a metre, where an f32 position
+    // at Earth radius would be off by up to a quarter of a metre.
+    let base = &planet().mesh;
+    let land = (0..base.edges.len() as u32).find(|&e| base.edges[e as usize].kind == crate::mesh::EdgeKind::Continent);
+    let dir = base.midpoint(land.expect("the planet has land")).normalize();
+    let north = (DVec3::Z - dir * dir.z).normalize();
+    let cam =
+        Camera::new(dir * (R + 2.0), (dir + north * (50.0 / R)).normalize() * R, None, 60.0, 640, 360, 0.5, 2.5, R)
+            .unwrap();
+    let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+    a.adapt(&cam, Some(400_000));
+    let mesh = a.mesh();
+    let shortest = mesh.edges.iter().map(|e| e.length).fold(f32::MAX, f32::min);
+    assert!(shortest < 2.0, "the view did not refine to metre edges ({shortest} m)");
+    same_wants(mesh, &cam);
+    // And the adaption itself, from the base mesh, on the device.
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    dev.adapt(&cam, Some(400_000));
+    assert!(dev.on_gpu() && dev.mesh() == mesh, "the GPU backend adapted to another mesh");
+}
+
+#[test]
+fn the_backend_names_parse() {
+    assert_eq!("cpu".parse::<Backend>(), Ok(Backend::Cpu));
+    assert_eq!("gpu".parse::<Backend>(), Ok(Backend::Gpu));
+    assert_eq!("auto".parse::<Backend>(), Ok(Backend::Auto));
+    assert!("cuda".parse::<Backend>().unwrap_err().contains("cpu, gpu or auto"));
+    // The CPU backend opens nothing; auto on a CPU adapter stays on the CPU.
+    assert!(select(Backend::Cpu).unwrap().0.is_none());
+    if gpu().is_cpu() {
+        let (chosen, line) = select(Backend::Auto).unwrap();
+        assert!(chosen.is_none() && line.contains("is itself a CPU"), "{line}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+    /// Random cameras, from the ground to far out, over a mesh adapted to another random camera.
+    #[test]
+    fn random_cameras_are_decided_alike(
+        lat in -80.0f64..80.0, lon in -180.0f64..180.0, log_h in 0.0f64..7.5,
+        lat2 in -80.0f64..80.0, lon2 in -180.0f64..180.0, px in 0.5f64..8.0,
+    ) {
+        let first = ground(lat2, lon2, 10f64.powf(5.0), 2e5, 4.0);
+        let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+        a.adapt(&first, Some(40_000));
+        let h = 10f64.powf(log_h);
+        same_wants(a.mesh(), &ground(lat, lon, h, h * 3.0 + 100.0, px));
+    }
+}
