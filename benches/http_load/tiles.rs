@@ -93,8 +93,7 @@ async fn paced(base: &str, connections: usize, rate: f64, secs: f64, mix: &[Req]
                     out.latencies_us.push(due.elapsed().as_micros() as u64);
                     out.bytes += len;
                     out.server_errors += usize::from(status >= 500);
-                    out.refused +=
-                        usize::from(!(200..500).contains(&status) && status < 500 || (300..500).contains(&status));
+                    out.refused += usize::from(!(200..300).contains(&status) && status < 500);
                     i += 1;
                     due += every;
                 }
