@@ -51,6 +51,8 @@ pub enum Table {
     Adapt,
     /// End-to-end snapshots.
     Render,
+    /// Adaption on the CPU and the wgpu compute backend, side by side.
+    Backends,
 }
 
 /// Prints the chosen tables (all when `only` is empty); builds run every case `runs` times and
@@ -60,7 +62,7 @@ pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
     if wants(Table::Build) {
         build_table(maps, runs, quick);
     }
-    if !wants(Table::Adapt) && !wants(Table::Render) {
+    if !wants(Table::Adapt) && !wants(Table::Render) && !wants(Table::Backends) {
         return;
     }
     let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
@@ -71,6 +73,10 @@ pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
     if wants(Table::Adapt) {
         println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
         crate::bench_adapt::run(&spec);
+    }
+    if wants(Table::Backends) {
+        println!("\n### Adaption backends, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
+        crate::bench_backends::run(&spec);
     }
     if wants(Table::Render) {
         println!("\n### Snapshots (render.png), Earth bitmap 1024x512, default targets, median of {runs}\n");

@@ -31,6 +31,7 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
         }
     };
     let planet = build_planet(spec, &mut |_, _| {}).expect("benchmark planet builds");
+    let (gpu, choice) = crate::adapt::gpu::select(crate::adapt::gpu::Backend::Auto).unwrap_or((None, String::new()));
     let p = &spec.params;
     let r = p.radius_m;
     let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 8.0, 40.0, r)
@@ -39,8 +40,8 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
     let ground = ground_camera(r, local_top(&planet.mesh, lat, lon, 100_000.0), lat, lon, 2000.0, 20_000.0, 30.0);
     let t = Instant::now();
     let first = Shot { camera: resized(&orbit, 64, 48), sun: None };
-    render::snapshot(renderer, &planet.mesh, p, &first, 10_000).expect("warm-up render");
-    println!("Adapter: {}. First render (pipelines, 64x48): {:.0} ms.\n", renderer.describe(), ms(t));
+    render::snapshot(renderer, &planet.mesh, p, &first, 10_000, gpu.clone()).expect("warm-up render");
+    println!("Adapter: {}; {choice}. First render (pipelines, 64x48): {:.0} ms.\n", renderer.describe(), ms(t));
     println!("| view | size | faces | adapt (ms) | prepare (ms) | draw + read back (ms) | PNG (ms) | total (ms) |");
     println!("|---|---|---:|---:|---:|---:|---:|---:|");
     for (name, cam) in [("orbit", &orbit), ("ground, 2 km up", &ground)] {
@@ -50,7 +51,7 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
             let mut faces = 0;
             for _ in 0..runs.max(1) {
                 let t0 = Instant::now();
-                let mut a = Adapter::new(planet.mesh.clone(), p.clone());
+                let mut a = Adapter::new(planet.mesh.clone(), p.clone()).with_gpu(gpu.clone());
                 faces = a.adapt(&shot.camera, Some(FACES)).faces;
                 let adapt = ms(t0);
                 let t1 = Instant::now();

@@ -7,6 +7,8 @@ pub mod adapt;
 pub mod bench;
 pub mod bench_adapt;
 #[cfg(feature = "service")]
+pub mod bench_backends;
+#[cfg(feature = "service")]
 pub mod bench_render;
 pub mod build;
 pub mod export;

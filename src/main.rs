@@ -103,6 +103,9 @@ enum Command {
         /// Output file.
         #[arg(long, default_value = "render.png")]
         out: PathBuf,
+        /// Where adaption runs: cpu, gpu or auto, as for `view`.
+        #[arg(long, default_value = "auto", value_parser = parse_backend)]
+        backend: riverworld::adapt::gpu::Backend,
     },
     /// Serve planets over HTTP (see openapi.yaml); without options, the built-in planet `earth`
     /// on 127.0.0.1:8080 with inputs stored under ./data.
@@ -195,6 +198,11 @@ struct ServeArgs {
     #[arg(long, default_value_t = riverworld::server::DEFAULT_MAX_RENDER_PIXELS,
           value_parser = clap::value_parser!(u64).range(1..=(8192 * 8192)))]
     max_render_pixels: u64,
+    /// Where adaption runs for views and snapshots: cpu (rayon), gpu (wgpu compute; refuses to
+    /// start without a suitable adapter) or auto (the GPU when the adapter is a real GPU with
+    /// f64 in shaders, else the CPU). The choice is logged at start; the answers are the same.
+    #[arg(long, default_value = "auto", value_parser = parse_backend)]
+    backend: riverworld::adapt::gpu::Backend,
 }
 
 fn run_serve(args: ServeArgs) -> Result<(), String> {
@@ -229,6 +237,7 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         max_map_pixels: args.max_map_mpixels << 20,
         max_render_pixels: args.max_render_pixels,
         render_delay: std::time::Duration::ZERO,
+        adapt_backend: args.backend,
     };
     let runtime = tokio::runtime::Runtime::new().map_err(|e| format!("cannot start the runtime: {e}"))?;
     runtime.block_on(async move {
@@ -372,6 +381,7 @@ fn run_render(
     max_faces: usize,
     format: Option<riverworld::render::ImageFormat>,
     out: &std::path::Path,
+    backend: riverworld::adapt::gpu::Backend,
 ) -> Result<(), String> {
     use riverworld::render::{self, ImageFormat, Shot};
     let spec = planet.spec().map_err(|e| e.to_string())?;
@@ -385,7 +395,10 @@ fn run_render(
     });
     let renderer = render::shared().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    let pixels = render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces).map_err(|e| e.to_string())?;
+    let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
+    eprintln!("riverworld: {choice}");
+    let pixels =
+        render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(|e| e.to_string())?;
     let bytes = render::encode(&pixels, shot.camera.width, shot.camera.height, format);
     generate::write_outputs(
         out.parent().unwrap_or(std::path::Path::new(".")),
@@ -417,8 +430,8 @@ fn main() -> ExitCode {
                 }
             }
         },
-        Command::Render { planet, camera, max_faces, format, out } => {
-            match run_render(&planet, &camera, max_faces as usize, format, &out) {
+        Command::Render { planet, camera, max_faces, format, out, backend } => {
+            match run_render(&planet, &camera, max_faces as usize, format, &out, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");

@@ -232,6 +232,8 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     assert!(o.status.success() && log.contains("adaption on the GPU"), "{log}");
     assert!(bytes == std::fs::read(&g).unwrap(), "view.glb differs between the CPU and GPU backends");
     refused(&["view", "--faces", "200", "--camera", cam, "--backend", "cuda"], "cpu, gpu or auto");
+    refused(&["render", "--faces", "200", "--camera", cam, "--backend", "metal"], "cpu, gpu or auto");
+    refused(&["serve", "--backend", "opencl"], "cpu, gpu or auto");
     for (bad, needle) in [
         ("eye=0,0,100&target=0,0,0", "inside the planet"),
         ("eye=0,0,1e7&target=0,0,1e7", "equals the eye"),

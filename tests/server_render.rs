@@ -1,5 +1,5 @@
 //! render.png / render.jpg over real HTTP: images of the camera's size, byte-identical across
-//! servers, cached with ETags, bad cameras and sizes refused, concurrent renders on one device,
+//! servers and adaption backends, cached with ETags, bad cameras and sizes refused, concurrent renders on one device,
 //! and a server without a graphics adapter that still serves everything else.
 
 mod server_common;
@@ -40,11 +40,17 @@ async fn renders_are_images_of_the_camera_size_identical_across_servers() {
     let jpg = image::load_from_memory(&jpg.bytes().await.unwrap()).unwrap();
     assert_eq!((jpg.width(), jpg.height()), (160, 120));
 
-    // A second server renders the same bytes from scratch.
-    let b = start(config(&scratch("render-b"))).await;
+    // A second server, adapting on the wgpu compute backend, renders the same bytes from
+    // scratch and adapts views to the same mesh.
+    let gpu = riverworld::adapt::gpu::Backend::Gpu;
+    let b = start(riverworld::server::Config { adapt_backend: gpu, ..config(&scratch("render-b")) }).await;
     assert_eq!(planet(&b).await, id);
     let other = b.get(&format!("/v1/planets/{id}/render.png?{SHOT}")).await.bytes().await.unwrap();
     assert!(other == png, "renders differ between servers");
+    let view = format!("/v1/planets/{id}/view.glb?{SHOT}");
+    let (va, vb) = (a.get(&view).await, b.get(&view).await);
+    assert_eq!((va.status().as_u16(), vb.status().as_u16()), (200, 200));
+    assert!(va.bytes().await.unwrap() == vb.bytes().await.unwrap(), "views differ between backends");
 
     // Concurrent different cameras queue on the one device and all succeed.
     let shots: Vec<String> = (0..4)

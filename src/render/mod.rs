@@ -131,15 +131,17 @@ pub fn draw(renderer: &Renderer, mesh: &Mesh, params: &Params, shot: &Shot) -> R
     renderer.draw(&scene, params.climate, cam.width, cam.height)
 }
 
-/// Adapts `base` to the shot's camera (at most `max_faces`) and draws it.
+/// Adapts `base` to the shot's camera (at most `max_faces`; on `gpu`'s device where given) and
+/// draws it.
 pub fn snapshot(
     renderer: &Renderer,
     base: &Mesh,
     params: &Params,
     shot: &Shot,
     max_faces: usize,
+    gpu: Option<std::sync::Arc<crate::adapt::gpu::GpuAdaption>>,
 ) -> Result<Vec<u8>, RenderError> {
-    let mut adapter = Adapter::new(base.clone(), params.clone());
+    let mut adapter = Adapter::new(base.clone(), params.clone()).with_gpu(gpu);
     adapter.adapt(&shot.camera, Some(max_faces));
     draw(renderer, adapter.mesh(), params, shot)
 }

@@ -54,7 +54,7 @@ fn orbit_view_shows_sea_land_and_ice_where_the_map_has_them() {
     let sun = Some(DVec3::new(1.0, 0.0, 0.3));
     let cam = orbit(5.0, 10.0, 384);
     let shot = Shot { camera: cam.clone(), sun };
-    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000).unwrap();
+    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000, None).unwrap();
     assert_eq!(img.len(), 384 * 384 * 4);
     let on_ground = |lat: f64, lon: f64| direction(lat, lon) * (params.radius_m + params.sea_level_m);
     // Share of water-coloured pixels in a 9x9 window around a point (rivers seen from orbit
@@ -85,7 +85,7 @@ fn orbit_view_shows_sea_land_and_ice_where_the_map_has_them() {
     // Antarctica seen from above the south pole in sunlight: ice, white.
     let cam = orbit(-89.0, 0.0, 256);
     let shot = Shot { camera: cam.clone(), sun: Some(DVec3::new(0.2, 0.0, -1.0)) };
-    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000).unwrap();
+    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000, None).unwrap();
     let [r, g, b] = rgb(&img, &cam, pixel_of(&cam, on_ground(-82.0, 40.0)).unwrap());
     assert!(r > 170 && g > 170 && b > 170, "ice: {r},{g},{b}");
 }
@@ -137,8 +137,8 @@ fn ground_view_shows_a_river_where_the_mesh_has_one() {
 fn the_same_shot_gives_the_same_bytes_and_formats_decode() {
     let (planet, params) = earth();
     let shot = Shot { camera: orbit(40.0, -100.0, 200), sun: None };
-    let a = snapshot(renderer(), &planet.mesh, params, &shot, 100_000).unwrap();
-    let b = snapshot(renderer(), &planet.mesh, params, &shot, 100_000).unwrap();
+    let a = snapshot(renderer(), &planet.mesh, params, &shot, 100_000, None).unwrap();
+    let b = snapshot(renderer(), &planet.mesh, params, &shot, 100_000, None).unwrap();
     assert!(a == b, "pixels differ between identical renders");
     let png = encode(&a, 200, 200, ImageFormat::Png);
     assert_eq!(png, encode(&b, 200, 200, ImageFormat::Png));
@@ -194,7 +194,7 @@ fn one_metre_above_the_ground_the_near_ground_and_the_sky_are_drawn() {
         eye.x, eye.y, eye.z, target.x, target.y, target.z
     );
     let shot = Shot { camera: Camera::parse_query(&q, params.radius_m).unwrap().0, sun: Some(up) };
-    let img = snapshot(renderer(), mesh, params, &shot, 300_000).unwrap();
+    let img = snapshot(renderer(), mesh, params, &shot, 300_000, None).unwrap();
     let cam = &shot.camera;
     // The bottom row is ground right under the eye (not clipped by the near plane), the top row
     // is sky; every pixel is one or the other, no holes to space.

@@ -90,6 +90,8 @@ pub struct Config {
     /// A pause inside each heavy render while it holds its permit; zero in service, lets tests
     /// observe busy permits and request timeouts.
     pub render_delay: Duration,
+    /// Where view-dependent adaption runs for views and snapshots (`--backend`).
+    pub adapt_backend: crate::adapt::gpu::Backend,
 }
 
 impl Default for Config {
@@ -113,6 +115,7 @@ impl Default for Config {
             max_map_pixels: crate::maps::MapLimits::default().max_pixels,
             max_render_pixels: DEFAULT_MAX_RENDER_PIXELS,
             render_delay: Duration::ZERO,
+            adapt_backend: crate::adapt::gpu::Backend::Auto,
         }
     }
 }
@@ -174,7 +177,14 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
         0 => std::thread::available_parallelism().map_or(2, |n| n.get()).max(2),
         n => n,
     };
+    let backend = config.adapt_backend;
+    let (adaption, choice) = tokio::task::spawn_blocking(move || crate::adapt::gpu::select(backend))
+        .await
+        .map_err(|e| e.to_string())?
+        .map_err(|e| format!("--backend gpu: {e}"))?;
+    tracing::info!("{choice}");
     let state = Arc::new(AppState {
+        adaption,
         pool: jobs::Pool::new(config.workers, config.max_queue),
         cache: cache::ByteLru::new(config.cache_bytes),
         metrics: metrics::Metrics::default(),

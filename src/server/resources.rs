@@ -10,6 +10,7 @@
 use super::error::ApiError;
 use super::state::{AppState, Availability, Cached, Entry};
 use super::Config;
+use crate::adapt::gpu::GpuAdaption;
 use crate::adapt::{Adapter, Camera};
 use crate::build::Planet;
 use crate::export;
@@ -110,11 +111,11 @@ fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
 }
 
 /// Renders a resource from a built planet (blocking; runs off the async runtime).
-fn render(res: Resource, job: &Job, planet: &Planet, params: &Params) -> Vec<u8> {
+fn render(res: Resource, job: &Job, planet: &Planet, params: &Params, gpu: Option<Arc<GpuAdaption>>) -> Vec<u8> {
     let mesh = &planet.mesh;
     match (res, job) {
         (_, Job::View { cam, max_faces }) => {
-            let mut adapter = Adapter::new(mesh.clone(), params.clone());
+            let mut adapter = Adapter::new(mesh.clone(), params.clone()).with_gpu(gpu);
             adapter.adapt(cam, Some(*max_faces));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
             export::view::view_glb(adapter.mesh(), params, origin)
@@ -168,7 +169,8 @@ pub async fn get(
     let params = entry.input.params.clone();
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
     let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
-    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params)).await
+    let gpu = state.adaption.clone();
+    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu)).await
 }
 
 /// One answer derived from a built planet: its route below the planet and normalised query

@@ -70,9 +70,11 @@ async fn snapshot(
     };
     let norm = format!("{}&max_faces={max_faces}", shot.to_query());
     let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
+    let gpu = state.adaption.clone();
     cached_or_error(state, entry, derived, h, move |planet| {
         let cam = &shot.camera;
-        let rgba = render::snapshot(renderer, &planet.mesh, &params, &shot, max_faces).map_err(|e| unavailable(&e))?;
+        let rgba =
+            render::snapshot(renderer, &planet.mesh, &params, &shot, max_faces, gpu).map_err(|e| unavailable(&e))?;
         Ok(render::encode(&rgba, cam.width, cam.height, format))
     })
     .await

@@ -92,6 +92,8 @@ pub struct AppState {
     pub inflight: Mutex<HashMap<String, Arc<OnceCell<Bytes>>>>,
     /// Permits for heavy renders, with a bounded wait queue (429 `busy` beyond it).
     pub renders: super::limit::HeavyLimit,
+    /// The device for adaption on the GPU backend; `None`: the CPU backend.
+    pub adaption: Option<Arc<crate::adapt::gpu::GpuAdaption>>,
 }
 
 impl Entry {

@@ -60,6 +60,33 @@ pub struct GpuAdaption {
     queue: wgpu::Queue,
     info: wgpu::AdapterInfo,
     state: state::StagePipeline,
+    /// What the dispatches since the last [`GpuAdaption::take_times`] cost.
+    times: std::sync::Mutex<DeviceTimes>,
+}
+
+/// What device work cost (`riverworld bench --only adapt`): summed over dispatches.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DeviceTimes {
+    /// State updates run on the device.
+    pub dispatches: u32,
+    /// Host wall time of those calls: upload, dispatch, wait and readback, milliseconds.
+    pub wall_ms: f64,
+    /// Device time of the compute passes from timestamp queries, milliseconds (0 if untimed).
+    pub kernel_ms: f64,
+    /// Whether the adapter has timestamp queries (`kernel_ms` is measured).
+    pub timed: bool,
+    /// Bytes written to the device.
+    pub upload_bytes: u64,
+}
+
+impl DeviceTimes {
+    fn add(&mut self, o: DeviceTimes) {
+        self.dispatches += o.dispatches;
+        self.wall_ms += o.wall_ms;
+        self.kernel_ms += o.kernel_ms;
+        self.timed |= o.timed;
+        self.upload_bytes += o.upload_bytes;
+    }
 }
 
 impl std::fmt::Debug for GpuAdaption {
@@ -71,15 +98,24 @@ impl std::fmt::Debug for GpuAdaption {
 impl GpuAdaption {
     /// Opens the adapter wgpu prefers (`WGPU_BACKEND` and friends narrow the choice) with `f64`.
     pub fn new() -> Result<GpuAdaption, GpuError> {
-        let adapter = open_adapter(wgpu::Backends::PRIMARY).map_err(GpuError::NoAdapter)?;
+        GpuAdaption::on(open_adapter(wgpu::Backends::PRIMARY).map_err(GpuError::NoAdapter)?)
+    }
+
+    /// Opens a device with `f64` on `adapter` and builds the pipelines.
+    fn on(adapter: wgpu::Adapter) -> Result<GpuAdaption, GpuError> {
         let info = adapter.get_info();
         if !adapter.features().contains(wgpu::Features::SHADER_F64) {
             return Err(GpuError::NoF64(format!("{} ({:?})", info.name, info.backend)));
         }
         let limits = adapter.limits();
+        let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+        let mut required_features = wgpu::Features::SHADER_F64;
+        if timestamps {
+            required_features |= wgpu::Features::TIMESTAMP_QUERY;
+        }
         let (device, queue) = futures::executor::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("riverworld adaption"),
-            required_features: wgpu::Features::SHADER_F64,
+            required_features,
             required_limits: wgpu::Limits {
                 max_buffer_size: limits.max_buffer_size,
                 max_storage_buffer_binding_size: limits.max_storage_buffer_binding_size,
@@ -89,13 +125,22 @@ impl GpuAdaption {
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(format!("{} ({:?}): {e}", info.name, info.backend)))?;
-        let state = state::StagePipeline::new(&device);
-        Ok(GpuAdaption { device, queue, info, state })
+        let state = state::StagePipeline::new(&device, timestamps);
+        Ok(GpuAdaption { device, queue, info, state, times: Default::default() })
     }
 
     /// The adapter, in words.
     pub fn describe(&self) -> String {
         format!("{} ({:?}, {:?})", self.info.name, self.info.backend, self.info.device_type)
+    }
+
+    /// The device work since the last call, and starts counting again.
+    pub fn take_times(&self) -> DeviceTimes {
+        std::mem::take(&mut *self.times.lock().unwrap_or_else(|e| e.into_inner()))
+    }
+
+    fn record(&self, t: DeviceTimes) {
+        self.times.lock().unwrap_or_else(|e| e.into_inner()).add(t);
     }
 
     /// Whether the adapter is a CPU (lavapipe, llvmpipe, WARP).
@@ -127,16 +172,25 @@ pub fn select(backend: Backend) -> Result<(Option<Arc<GpuAdaption>>, String), Gp
             let line = format!("adaption on the GPU: {}", gpu.describe());
             Ok((Some(Arc::new(gpu)), line))
         }
-        Backend::Auto => match GpuAdaption::new() {
-            Ok(gpu) if gpu.is_cpu() => {
-                Ok((None, format!("adaption on the CPU: the adapter {} is itself a CPU", gpu.describe())))
+        Backend::Auto => {
+            let adapter = match open_adapter(wgpu::Backends::PRIMARY) {
+                Ok(a) => a,
+                Err(e) => return Ok((None, format!("adaption on the CPU: {}", GpuError::NoAdapter(e)))),
+            };
+            let info = adapter.get_info();
+            if info.device_type == wgpu::DeviceType::Cpu {
+                let line =
+                    format!("adaption on the CPU: the adapter {} ({:?}) is itself a CPU", info.name, info.backend);
+                return Ok((None, line));
             }
-            Ok(gpu) => {
-                let line = format!("adaption on the GPU: {}", gpu.describe());
-                Ok((Some(Arc::new(gpu)), line))
+            match GpuAdaption::on(adapter) {
+                Ok(gpu) => {
+                    let line = format!("adaption on the GPU: {}", gpu.describe());
+                    Ok((Some(Arc::new(gpu)), line))
+                }
+                Err(e) => Ok((None, format!("adaption on the CPU: {e}"))),
             }
-            Err(e) => Ok((None, format!("adaption on the CPU: {e}"))),
-        },
+        }
     }
 }
 

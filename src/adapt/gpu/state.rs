@@ -1,11 +1,12 @@
 //! State update on the device (paper §5.1, Algorithm 1): `shaders/adapt_state.wgsl`, the twin
 //! of [`crate::adapt::state::edge_wants`].
 
-use super::{GpuAdaption, GpuError};
+use super::{DeviceTimes, GpuAdaption, GpuError};
 use crate::adapt::camera::{View, C_LOD};
 use crate::mesh::Mesh;
 use bytemuck::{Pod, Zeroable};
 use std::sync::Mutex;
+use std::time::Instant;
 
 const SHADER: &str = include_str!("../../../shaders/adapt_state.wgsl");
 const WORKGROUP: u32 = 256;
@@ -52,6 +53,8 @@ pub(super) struct StagePipeline {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::ComputePipeline,
     buffers: Mutex<Option<Buffers>>,
+    /// Start and end of the dispatch, where the device has timestamp queries.
+    stamps: Option<wgpu::QuerySet>,
 }
 
 struct Buffers {
@@ -59,11 +62,14 @@ struct Buffers {
     edges: wgpu::Buffer,
     view: wgpu::Buffer,
     wants: wgpu::Buffer,
+    /// The two resolved timestamps (unused without timestamp queries).
+    stamps: wgpu::Buffer,
+    /// The flags, then (at `stamps_at`) the two timestamps.
     readback: wgpu::Buffer,
 }
 
 impl StagePipeline {
-    pub(super) fn new(device: &wgpu::Device) -> StagePipeline {
+    pub(super) fn new(device: &wgpu::Device, timestamps: bool) -> StagePipeline {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("adapt_state.wgsl"),
             source: wgpu::ShaderSource::Wgsl(SHADER.into()),
@@ -95,7 +101,14 @@ impl StagePipeline {
             compilation_options: Default::default(),
             cache: None,
         });
-        StagePipeline { layout, pipeline, buffers: Mutex::new(None) }
+        let stamps = timestamps.then(|| {
+            device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("edge_wants timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count: 2,
+            })
+        });
+        StagePipeline { layout, pipeline, buffers: Mutex::new(None), stamps }
     }
 }
 
@@ -124,6 +137,7 @@ pub fn edge_wants(gpu: &GpuAdaption, mesh: &Mesh, view: &View) -> Result<Vec<boo
     if n == 0 {
         return Ok(Vec::new());
     }
+    let start = Instant::now();
     let device = &gpu.device;
     let limit = device.limits().max_storage_buffer_binding_size;
     let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
@@ -141,18 +155,20 @@ pub fn edge_wants(gpu: &GpuAdaption, mesh: &Mesh, view: &View) -> Result<Vec<boo
     let stage = &gpu.state;
     let mut slot = stage.buffers.lock().unwrap_or_else(|e| e.into_inner());
     let old = slot.take();
-    let (ov, oe, ow, or, oview) = match old {
-        Some(b) => (Some(b.vertices), Some(b.edges), Some(b.wants), Some(b.readback), Some(b.view)),
-        None => (None, None, None, None, None),
+    let (ov, oe, ow, or, oview, ost) = match old {
+        Some(b) => (Some(b.vertices), Some(b.edges), Some(b.wants), Some(b.readback), Some(b.view), Some(b.stamps)),
+        None => (None, None, None, None, None, None),
     };
     use wgpu::BufferUsages as U;
     let wants_bytes = 4 * n as u64;
+    let stamps_at = wants_bytes.next_multiple_of(8);
     let buffers = Buffers {
         vertices: ensure(device, ov, vertex_bytes.len() as u64, U::STORAGE | U::COPY_DST, "vertices"),
         edges: ensure(device, oe, edge_bytes.len() as u64, U::STORAGE | U::COPY_DST, "edges"),
         view: ensure(device, oview, std::mem::size_of::<GpuView>() as u64, U::STORAGE | U::COPY_DST, "view"),
         wants: ensure(device, ow, wants_bytes, U::STORAGE | U::COPY_SRC, "wants"),
-        readback: ensure(device, or, wants_bytes, U::MAP_READ | U::COPY_DST, "wants readback"),
+        stamps: ensure(device, ost, 16, U::QUERY_RESOLVE | U::COPY_SRC, "timestamps"),
+        readback: ensure(device, or, stamps_at + 16, U::MAP_READ | U::COPY_DST, "wants readback"),
     };
     gpu.queue.write_buffer(&buffers.vertices, 0, vertex_bytes);
     gpu.queue.write_buffer(&buffers.edges, 0, edge_bytes);
@@ -182,26 +198,52 @@ pub fn edge_wants(gpu: &GpuAdaption, mesh: &Mesh, view: &View) -> Result<Vec<boo
     let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("adapt state") });
     {
-        let mut pass = encoder
-            .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("edge_wants"), ..Default::default() });
+        let timestamp_writes = stage.stamps.as_ref().map(|q| wgpu::ComputePassTimestampWrites {
+            query_set: q,
+            beginning_of_pass_write_index: Some(0),
+            end_of_pass_write_index: Some(1),
+        });
+        let mut pass =
+            encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("edge_wants"), timestamp_writes });
         pass.set_pipeline(&stage.pipeline);
         pass.set_bind_group(0, &bind, &[]);
         pass.dispatch_workgroups(gx, gy, 1);
     }
     encoder.copy_buffer_to_buffer(&buffers.wants, 0, &buffers.readback, 0, wants_bytes);
+    if let Some(q) = &stage.stamps {
+        encoder.resolve_query_set(q, 0..2, &buffers.stamps, 0);
+        encoder.copy_buffer_to_buffer(&buffers.stamps, 0, &buffers.readback, stamps_at, 16);
+    }
     gpu.queue.submit([encoder.finish()]);
     let invalid = futures::executor::block_on(scope.pop());
     if let Some(e) = futures::executor::block_on(oom.pop()).or(invalid) {
         return Err(GpuError::Device(e.to_string()));
     }
-    let out = read_flags(device, &buffers.readback, n)?;
+    let (out, ticks) = read_flags(device, &buffers.readback, n, stamps_at)?;
     *slot = Some(buffers);
+    let kernel_ms = stage.stamps.as_ref().map(|_| {
+        let [begin, end] = ticks;
+        end.saturating_sub(begin) as f64 * gpu.queue.get_timestamp_period() as f64 / 1e6
+    });
+    gpu.record(DeviceTimes {
+        dispatches: 1,
+        wall_ms: start.elapsed().as_secs_f64() * 1000.0,
+        kernel_ms: kernel_ms.unwrap_or(0.0),
+        timed: kernel_ms.is_some(),
+        upload_bytes: (vertex_bytes.len() + edge_bytes.len()) as u64,
+    });
     Ok(out)
 }
 
-/// Maps the first `n` u32 flags of `buffer` and reads them as booleans.
-fn read_flags(device: &wgpu::Device, buffer: &wgpu::Buffer, n: usize) -> Result<Vec<bool>, GpuError> {
-    let slice = buffer.slice(..4 * n as u64);
+/// Maps `buffer` and reads its first `n` u32 flags as booleans and the two u64 timestamps at
+/// byte `stamps_at`.
+fn read_flags(
+    device: &wgpu::Device,
+    buffer: &wgpu::Buffer,
+    n: usize,
+    stamps_at: u64,
+) -> Result<(Vec<bool>, [u64; 2]), GpuError> {
+    let slice = buffer.slice(..stamps_at + 16);
     let (tx, rx) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |r| {
         let _ = tx.send(r);
@@ -210,7 +252,10 @@ fn read_flags(device: &wgpu::Device, buffer: &wgpu::Buffer, n: usize) -> Result<
     rx.recv().map_err(|e| GpuError::Device(e.to_string()))?.map_err(|e| GpuError::Device(e.to_string()))?;
     let out = {
         let data = slice.get_mapped_range().map_err(|e| GpuError::Device(e.to_string()))?;
-        bytemuck::cast_slice::<u8, u32>(&data).iter().map(|&w| w != 0).collect()
+        let flags = bytemuck::cast_slice::<u8, u32>(&data[..4 * n]).iter().map(|&w| w != 0).collect();
+        let at = stamps_at as usize;
+        let tick = |i: usize| u64::from_le_bytes(data[at + 8 * i..at + 8 * i + 8].try_into().expect("8 bytes"));
+        (flags, [tick(0), tick(1)])
     };
     buffer.unmap();
     Ok(out)
