@@ -59,7 +59,16 @@ pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
 /// The terrain of a mesh as a [`GlbMesh`] in glTF axes; with `origin` (planet frame), positions
 /// are `f32` offsets from it computed in `f64`, and the origin becomes the node translation.
 pub fn terrain_mesh(mesh: &Mesh, params: &Params, origin: Option<glam::DVec3>) -> GlbMesh {
-    let normals = surface_normals(mesh);
+    terrain_mesh_with_normals(mesh, params, origin, &surface_normals(mesh))
+}
+
+/// [`terrain_mesh`] with the given unit normals (planet frame), one per vertex.
+pub fn terrain_mesh_with_normals(
+    mesh: &Mesh,
+    params: &Params,
+    origin: Option<glam::DVec3>,
+    normals: &[glam::DVec3],
+) -> GlbMesh {
     let o = origin.unwrap_or(glam::DVec3::ZERO);
     let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
     let sea = params.sea_level_m;
@@ -70,7 +79,7 @@ pub fn terrain_mesh(mesh: &Mesh, params: &Params, origin: Option<glam::DVec3>) -
         indices: Vec::with_capacity(mesh.faces.len() * 3),
         translation: origin.map(|o| to_gltf_axes(o.to_array())),
     };
-    for (v, n) in mesh.vertices.iter().zip(&normals) {
+    for (v, n) in mesh.vertices.iter().zip(normals) {
         out.positions.push(to_gltf_axes((v.p() - o).to_array()).map(|x| x as f32));
         let n = to_gltf_axes(n.to_array()).map(|x| x as f32);
         let len = n.iter().map(|x| x * x).sum::<f32>().sqrt();

@@ -4,12 +4,15 @@
 //!
 //! Two tiles of one level refine their common border edge by the same tree nodes, so they share
 //! its vertices bit for bit; between levels, the skirts — walls hanging from the border towards
-//! the planet's centre — hide the gaps.
+//! the planet's centre — hide the gaps. A border vertex's normal is taken over its whole ring in
+//! the level's uniform triangulation, the faces of the neighbouring cells included (`ring.rs`),
+//! so neighbouring tiles light their common border alike, bit for bit.
 
 use super::bounds::{local_axes, OrientedBox};
 use super::key::TileKey;
+use super::ring::border_normals;
 use super::tree::{Refiner, ROOTS};
-use crate::export::glb::{encode_glb, terrain_mesh, to_gltf_axes, GlbMesh};
+use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
 use crate::export::view::water_mesh;
 use crate::mesh::terrain::lift;
 use crate::mesh::{Face, FaceKind, Mesh, NONE};
@@ -35,6 +38,8 @@ pub struct TileContent {
     pub bounds: OrientedBox,
     /// The terrain surface: planet-frame vertex positions and triangles (without skirts).
     pub surface: Mesh,
+    /// Unit normals of the surface's vertices, planet frame.
+    pub normals: Vec<DVec3>,
     /// How many splits below the base mesh the content needed.
     pub splits: usize,
 }
@@ -68,8 +73,10 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let (cell, axes) = cell_frame(refiner, key);
     let mut leaves = Vec::with_capacity(1 << spec.content_depth);
     refiner.descendants(cell, spec.content_depth, &mut leaves);
-    let surface = surface_mesh(refiner.mesh(), &leaves);
+    let (surface, ids) = surface_mesh(refiner.mesh(), &leaves);
     let border = border_edges(&surface);
+    let depth = 2 * u32::from(key.level) + spec.content_depth;
+    let normals = border_normals(refiner, cell, depth, &surface, &ids, &border);
 
     let mut hull: Vec<DVec3> = Vec::with_capacity(surface.vertices.len() + border.len());
     for v in &surface.vertices {
@@ -82,30 +89,32 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let bounds = OrientedBox::fit(hull, axes, spec.pad_m);
 
     let origin = bounds.centre;
-    let mut terrain = terrain_mesh(&surface, params, Some(origin));
+    let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &normals);
     terrain.translation = None;
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
     let mut water = water_mesh(&surface, params, origin);
     water.translation = None;
     let glb = encode_glb(&[terrain, water]);
-    TileContent { glb, bounds, surface, splits: refiner.splits() }
+    TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
 }
 
 /// The leaves as a mesh of their own (vertices in order of first use; faces only, no edges),
-/// enough for normals, colours and the water surface.
-fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> Mesh {
+/// enough for normals, colours and the water surface, and each of its vertices' index in `mesh`.
+fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
     let mut slot: HashMap<u32, u32> = HashMap::with_capacity(leaves.len());
     let mut out = Mesh { radius: mesh.radius, ..Mesh::default() };
+    let mut ids = Vec::new();
     for leaf in leaves {
         let v = leaf.map(|v| {
             *slot.entry(v).or_insert_with(|| {
                 out.vertices.push(mesh.vertices[v as usize]);
+                ids.push(v);
                 out.vertices.len() as u32 - 1
             })
         });
         out.faces.push(Face { v, e: [NONE; 3], kind: FaceKind::Sea, _pad: [0; 3] });
     }
-    out
+    (out, ids)
 }
 
 /// The border: directed edges `(a, b)` of faces (counter-clockwise) whose reverse no face has,

@@ -32,6 +32,7 @@ mod bounds;
 mod content;
 mod files;
 mod key;
+mod ring;
 mod tileset;
 mod tree;
 

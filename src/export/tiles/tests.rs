@@ -1,7 +1,7 @@
 use super::*;
 use crate::export::test_planet;
 use serde_json::Value;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::sync::OnceLock;
 
 /// The shared test planet, tiled once.
@@ -105,6 +105,65 @@ fn neighbouring_tiles_share_their_border_vertices() {
     // The 16 tiles tile root 0: all edges but those on root 0's own border are shared.
     let outer = content::border_edges(&t.content(TileKey::root(0)).surface).len() * 4;
     assert_eq!(shared + outer, all.len(), "outer border edges: {outer}");
+}
+
+/// Checks that `contents` light every vertex they share alike, bit for bit, and every vertex
+/// whose ring closes in their union as the area-weighted normal over that ring. Returns how many
+/// vertices were shared and how many had whole rings.
+fn normals_are_seamless(contents: &[TileContent]) -> (usize, usize) {
+    type Key = [u64; 3];
+    let mut ring: HashMap<Key, Vec<[Key; 3]>> = HashMap::new();
+    let mut area: HashMap<[Key; 3], DVec3> = HashMap::new();
+    let mut given: HashMap<Key, DVec3> = HashMap::new();
+    let mut shared = 0;
+    for c in contents {
+        let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
+        for f in &c.surface.faces {
+            let [a, b, d] = f.v.map(|v| c.surface.vertices[v as usize].p());
+            let tri = f.v.map(bits);
+            area.insert(tri, (b - a).cross(d - a) * 0.5);
+            for k in tri {
+                ring.entry(k).or_default().push(tri);
+            }
+        }
+        for (v, &n) in c.normals.iter().enumerate() {
+            if let Some(old) = given.insert(bits(v as u32), n) {
+                assert_eq!(old.to_array().map(f64::to_bits), n.to_array().map(f64::to_bits), "a seam at {v}");
+                shared += 1;
+            }
+        }
+    }
+    let mut whole = 0;
+    for (key, n) in &given {
+        let faces = &ring[key];
+        let mut balance: HashMap<Key, i32> = HashMap::new();
+        for t in faces {
+            let i = t.iter().position(|k| k == key).unwrap();
+            *balance.entry(t[(i + 1) % 3]).or_default() += 1;
+            *balance.entry(t[(i + 2) % 3]).or_default() -= 1;
+        }
+        if balance.values().all(|&b| b == 0) {
+            whole += 1;
+            let want = faces.iter().fold(DVec3::ZERO, |acc, t| acc + area[t]).normalize();
+            assert!(n.distance(want) < 1e-12, "normal {n} but its ring gives {want}");
+        }
+    }
+    (shared, whole)
+}
+
+#[test]
+fn neighbouring_tiles_light_their_common_border_alike() {
+    // Level 0 covers the sphere: every vertex's ring is in the union, across the roots' borders.
+    let t = tiles();
+    let level0: Vec<TileContent> = (0..8).map(|r| t.content(TileKey::root(r))).collect();
+    let (shared, whole) = normals_are_seamless(&level0);
+    let vertices: usize = level0.iter().map(|c| c.surface.vertices.len()).sum::<usize>() - shared;
+    assert!(shared > 8 * 30 && whole == vertices, "{shared} shared, {whole} of {vertices} whole rings");
+    // Level 2 inside root 0 (shared vertices alike; whole rings everywhere but on root 0's border).
+    let keys: Vec<TileKey> = TileKey::root(0).children().iter().flat_map(|k| k.children()).collect();
+    let level2: Vec<TileContent> = keys.iter().map(|&k| t.content(k)).collect();
+    let (shared, whole) = normals_are_seamless(&level2);
+    assert!(shared > 16 * 20 && whole > 16 * 450, "{shared} shared, {whole} whole rings");
 }
 
 #[test]
