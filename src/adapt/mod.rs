@@ -33,6 +33,9 @@ pub const MAX_PASSES: usize = 400;
 const BUDGET_STEP: f64 = 1.25;
 /// Coarsest step of the face budget's search (`1.25^130` is about 4e12).
 const MAX_STEP: i32 = 130;
+/// How much coarser than the plain target the first budget search probes (faces added to the
+/// base mesh shrink about `1.25^2`-fold per step: six steps are ~15 times fewer).
+const PROBE_STEPS: i32 = 6;
 
 /// What one adaption did (`riverworld view --stats`).
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -79,8 +82,10 @@ pub struct Adapter {
     params: Params,
     /// The mesh adaption started from; budget searches restart from it instead of coarsening.
     base: Mesh,
-    /// Step of the last budget search (see [`Adapter::fit_budget`]).
-    last_step: i32,
+    /// Whether the mesh is still the base mesh (nothing adapted yet).
+    fresh: bool,
+    /// Step of the last budget search (see [`Adapter::fit_budget`]); `None` before the first.
+    last_step: Option<i32>,
     /// The device for the stages that run on the GPU backend; `None` on the CPU backend.
     #[cfg(feature = "gpu")]
     gpu: Option<std::sync::Arc<gpu::GpuAdaption>>,
@@ -93,7 +98,8 @@ impl Adapter {
             mesh: base.clone(),
             params,
             base,
-            last_step: 0,
+            fresh: true,
+            last_step: None,
             #[cfg(feature = "gpu")]
             gpu: None,
         }
@@ -148,11 +154,12 @@ impl Adapter {
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };
         let step = match max_faces {
             None => {
-                stats.converged = self.run(&self.view(cam, 0), None, &mut stats);
+                stats.converged = self.run(&self.view(cam, 0), None, self.fresh, &mut stats);
                 0
             }
             Some(max) => self.fit_budget(cam, max, &mut stats),
         };
+        self.fresh = false;
         stats.lod_scale = BUDGET_STEP.powi(step);
         stats.faces = self.mesh.faces.len();
         stats.vertices = self.mesh.vertices.len();
@@ -178,12 +185,16 @@ impl Adapter {
     /// over a monotone function. Trials run with the budget as a face cap: refining stops as
     /// soon as the mesh exceeds it, which proves `F(k) > max`. Coarsening (collapses) is the
     /// slow direction, so trials start from the coarsest mesh at hand: the last mesh that
-    /// fitted (a sub-refinement of every finer target) or the base mesh. The next step is
-    /// predicted from faces growing with the square of the inverse target size, and the search
-    /// starts at the previous call's step (frame-to-frame coherence).
+    /// fitted (a sub-refinement of every finer target) or the base mesh.
+    ///
+    /// The search starts at the previous call's step (frame-to-frame coherence) or, on the
+    /// first call, [`PROBE_STEPS`] coarser than the plain target: a cheap first fit that finer
+    /// trials refine instead of starting over. From a fitting trial the next step comes from
+    /// the faces added to the base mesh growing with the square of the inverse target size
+    /// ([`Adapter::steps_to_fill`]), so one overshoot usually ends the search.
     fn fit_budget(&mut self, cam: &Camera, max: usize, stats: &mut AdaptStats) -> i32 {
         let steps_for = |ratio: f64| (ratio.max(1.0).sqrt().ln() / BUDGET_STEP.ln()).ceil() as i32;
-        let mut k = self.last_step.clamp(0, MAX_STEP);
+        let mut k = self.last_step.unwrap_or(PROBE_STEPS).clamp(0, MAX_STEP);
         let mut over: i32 = -1;
         let mut fits: Option<(i32, Mesh)> = None;
         let mut first = true;
@@ -194,17 +205,18 @@ impl Adapter {
                     None => self.base.clone(),
                 };
             }
+            // Later trials start from the base mesh or one that fitted a coarser target: both are
+            // sub-refinements of this target's mesh, so they only refine.
+            let refine_only = !first || self.fresh;
+            let converged = self.run(&self.view(cam, k), Some(max), refine_only, stats);
             first = false;
-            let converged = self.run(&self.view(cam, k), Some(max), stats);
             let faces = self.mesh.faces.len();
             if converged && faces <= max {
                 stats.converged = true;
                 if k == 0 || k == over + 1 {
                     break;
                 }
-                let down = steps_for(max as f64 / faces.max(1) as f64).max(1) - 1;
                 fits = Some((k, std::mem::take(&mut self.mesh)));
-                k = (k - down.max(1)).max(over + 1);
             } else {
                 over = k;
                 if k >= MAX_STEP {
@@ -212,19 +224,31 @@ impl Adapter {
                     stats.converged = false;
                     break;
                 }
-                match &fits {
-                    Some((hi, _)) if *hi == over + 1 => {
-                        self.mesh = fits.take().expect("a fitting mesh").1;
-                        k = over + 1;
-                        break;
-                    }
-                    Some((hi, _)) => k = (k + steps_for(faces as f64 / max as f64).max(1)).min(hi - 1),
-                    None => k = (k + steps_for(faces as f64 / max as f64).max(1)).min(MAX_STEP),
+                if fits.as_ref().is_some_and(|(hi, _)| *hi == over + 1) {
+                    self.mesh = fits.take().expect("a fitting mesh").1;
+                    k = over + 1;
+                    break;
                 }
             }
+            k = match &fits {
+                Some((hi, m)) => (hi - self.steps_to_fill(m.faces.len(), max)).clamp(over + 1, hi - 1),
+                None => (k + steps_for(faces as f64 / max as f64).max(1)).min(MAX_STEP),
+            };
         }
-        self.last_step = k;
+        self.last_step = Some(k);
         k
+    }
+
+    /// How many steps finer than a fitting mesh of `faces` faces the budget `max` allows, by
+    /// the faces added to the base mesh growing `1.25^2`-fold per step (where the view stays at
+    /// the base mesh's resolution nothing grows). Large when the mesh is the base mesh itself.
+    fn steps_to_fill(&self, faces: usize, max: usize) -> i32 {
+        let base = self.base.faces.len() as f64;
+        let (added, room) = (faces as f64 - base, max as f64 - base);
+        if added < 1.0 {
+            return MAX_STEP;
+        }
+        ((room / added).max(1.0).ln() / (2.0 * BUDGET_STEP.ln())).floor() as i32
     }
 
     /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit.
@@ -232,8 +256,10 @@ impl Adapter {
     /// With the camera fixed, an edge's answer never changes, so the flags are computed once
     /// and then only for edges the splits touched; collapses are looked for in the first pass,
     /// after a pass that collapsed something (coarsening unwinds level by level), and before
-    /// convergence is declared.
-    fn run(&mut self, view: &View, cap: Option<usize>, stats: &mut AdaptStats) -> bool {
+    /// convergence is declared — except with `refine_only`, for a mesh that is a sub-refinement
+    /// of the target's (the base mesh, or one converged for a coarser target): every vertex it
+    /// has or gains is wanted or needed by a wanted split, so no collapse can be due.
+    fn run(&mut self, view: &View, cap: Option<usize>, refine_only: bool, stats: &mut AdaptStats) -> bool {
         let mut t = Instant::now();
         let mut wants = self.edge_wants(view);
         lap(&mut t, &mut stats.stage_ms.state);
@@ -242,6 +268,9 @@ impl Adapter {
             stats.passes += 1;
             // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
             let over_cap = cap.is_some_and(|c| self.mesh.faces.len() > c);
+            if refine_only && over_cap {
+                return false;
+            }
             let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
             let splits = split::apply_splits(&mut self.mesh, &ready, &self.params);
@@ -251,7 +280,7 @@ impl Adapter {
                 lap(&mut t, &mut stats.stage_ms.state);
             }
             let mut collapses = 0;
-            if look_for_collapses || splits == 0 {
+            if !refine_only && (look_for_collapses || splits == 0) {
                 let demanded = state::demanded(&self.mesh, &wants);
                 let sites = state::collapse_candidates(&self.mesh, view, &demanded);
                 collapses = collapse::apply_collapses(&mut self.mesh, &sites);
