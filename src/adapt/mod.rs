@@ -199,18 +199,26 @@ impl Adapter {
         let mut fits: Option<(i32, Mesh)> = None;
         let mut first = true;
         loop {
-            if !first {
-                self.mesh = match &fits {
-                    Some((_, m)) => m.clone(),
-                    None => self.base.clone(),
-                };
-            }
-            // Later trials start from the base mesh or one that fitted a coarser target: both are
-            // sub-refinements of this target's mesh, so they only refine.
-            let refine_only = !first || self.fresh;
-            let converged = self.run(&self.view(cam, k), Some(max), refine_only, stats);
+            let view = self.view(cam, k);
+            // A finer trial from the fitted mesh is over the budget before it starts if the
+            // fitted mesh's wanted splits alone would exceed it (no copy needed to know).
+            let hopeless = !first && fits.as_mut().is_some_and(|(_, m)| self.wanted_exceed(m, &view, max));
+            let (converged, faces) = if hopeless {
+                (false, max + 1)
+            } else {
+                if !first {
+                    self.mesh = match &fits {
+                        Some((_, m)) => m.clone(),
+                        None => self.base.clone(),
+                    };
+                }
+                // Later trials start from the base mesh or one that fitted a coarser target:
+                // both are sub-refinements of this target's mesh, so they only refine.
+                let refine_only = !first || self.fresh;
+                let converged = self.run(&view, Some(max), refine_only, stats);
+                (converged, self.mesh.faces.len())
+            };
             first = false;
-            let faces = self.mesh.faces.len();
             if converged && faces <= max {
                 stats.converged = true;
                 if k == 0 || k == over + 1 {
@@ -239,6 +247,16 @@ impl Adapter {
         k
     }
 
+    /// Whether refining `mesh`, a sub-refinement of `view`'s converged mesh, must exceed `max`
+    /// faces: each of its edges that wants a split is split in the converged mesh (a wish
+    /// depends on the edge alone), and each split adds two faces.
+    fn wanted_exceed(&mut self, mesh: &mut Mesh, view: &View, max: usize) -> bool {
+        std::mem::swap(&mut self.mesh, mesh);
+        let wanted = self.edge_wants(view).iter().filter(|&&w| w).count();
+        std::mem::swap(&mut self.mesh, mesh);
+        mesh.faces.len() + 2 * wanted > max
+    }
+
     /// How many steps finer than a fitting mesh of `faces` faces the budget `max` allows, by
     /// the faces added to the base mesh growing `1.25^2`-fold per step (where the view stays at
     /// the base mesh's resolution nothing grows). Large when the mesh is the base mesh itself.
@@ -263,6 +281,9 @@ impl Adapter {
         let mut t = Instant::now();
         let mut wants = self.edge_wants(view);
         lap(&mut t, &mut stats.stage_ms.state);
+        if refine_only && cap.is_some_and(|c| self.mesh.faces.len() + 2 * wants.iter().filter(|&&w| w).count() > c) {
+            return false; // see `wanted_exceed`
+        }
         let mut look_for_collapses = true;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;

@@ -27,15 +27,18 @@ use glam::DVec3;
 /// The mesh's stored `normal` holds a downstream tangent for river vertices, so exports always
 /// recompute normals from the faces.
 pub fn surface_normals(mesh: &Mesh) -> Vec<DVec3> {
+    use rayon::prelude::*;
+    // Face vectors in parallel, then summed per vertex in face order (the same bits as a serial
+    // pass), then normalised in parallel.
+    let areas: Vec<DVec3> = (0..mesh.faces.len() as u32).into_par_iter().map(|f| mesh.face_area_vector(f)).collect();
     let mut acc = vec![DVec3::ZERO; mesh.vertices.len()];
-    for f in 0..mesh.faces.len() as u32 {
-        let n = mesh.face_area_vector(f);
-        for &v in &mesh.faces[f as usize].v {
+    for (face, &n) in mesh.faces.iter().zip(&areas) {
+        for &v in &face.v {
             acc[v as usize] += n;
         }
     }
-    acc.iter()
-        .zip(&mesh.vertices)
+    acc.par_iter()
+        .zip(mesh.vertices.par_iter())
         .map(|(n, v)| {
             let n = n.normalize_or_zero();
             if n == DVec3::ZERO {

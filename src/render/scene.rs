@@ -80,23 +80,34 @@ pub fn default_sun(cam: &Camera) -> DVec3 {
 /// highest water of submerged face neighbours, else own water.
 pub fn water_levels(mesh: &Mesh) -> Vec<f32> {
     let mut level: Vec<f32> =
-        mesh.vertices.iter().map(|v| if v.submerged() { v.water } else { f32::NEG_INFINITY }).collect();
-    for f in &mesh.faces {
-        let wet =
-            f.v.iter()
-                .map(|&v| &mesh.vertices[v as usize])
-                .filter(|v| v.submerged())
-                .map(|v| v.water)
-                .fold(f32::NEG_INFINITY, f32::max);
-        if wet > f32::NEG_INFINITY {
-            for &v in &f.v {
-                if !mesh.vertices[v as usize].submerged() {
-                    level[v as usize] = level[v as usize].max(wet);
-                }
+        mesh.vertices.par_iter().map(|v| if v.submerged() { v.water } else { f32::NEG_INFINITY }).collect();
+    // Each face's highest standing water, in parallel; spread to its dry vertices in face order.
+    let wet_faces: Vec<(usize, f32)> = mesh
+        .faces
+        .par_iter()
+        .enumerate()
+        .filter_map(|(i, f)| {
+            let wet =
+                f.v.iter()
+                    .map(|&v| &mesh.vertices[v as usize])
+                    .filter(|v| v.submerged())
+                    .map(|v| v.water)
+                    .fold(f32::NEG_INFINITY, f32::max);
+            (wet > f32::NEG_INFINITY).then_some((i, wet))
+        })
+        .collect();
+    for &(i, wet) in &wet_faces {
+        for &v in &mesh.faces[i].v {
+            if !mesh.vertices[v as usize].submerged() {
+                level[v as usize] = level[v as usize].max(wet);
             }
         }
     }
-    level.iter().zip(&mesh.vertices).map(|(&l, v)| if l == f32::NEG_INFINITY { v.water } else { l }).collect()
+    level
+        .par_iter()
+        .zip(mesh.vertices.par_iter())
+        .map(|(&l, v)| if l == f32::NEG_INFINITY { v.water } else { l })
+        .collect()
 }
 
 /// Reversed-Z, infinite-far perspective times a rotation-only view (the eye is the origin).
@@ -131,12 +142,12 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             }
         })
         .collect();
-    let terrain: Vec<u32> = mesh.faces.iter().flat_map(|f| f.v).collect();
+    let terrain: Vec<u32> = mesh.faces.par_iter().flat_map_iter(|f| f.v).collect();
     let water: Vec<u32> = mesh
         .faces
-        .iter()
+        .par_iter()
         .filter(|f| f.v.iter().any(|&v| mesh.vertices[v as usize].submerged()))
-        .flat_map(|f| f.v)
+        .flat_map_iter(|f| f.v)
         .collect();
     let (fwd, right, up) = cam.basis();
     let tan_y = (cam.fov_deg.to_radians() * 0.5).tan();
