@@ -73,16 +73,20 @@ fn wants_split(lod_len: f64, centre: vec3<f64>, radius: f64, sea: bool) -> bool 
     let rel = centre - triple(view.eye);
     let len = sqrt(dot3(rel, rel));
     var d = max(len - radius, f64(1e-3));
+    var c = view.c_land;
+    if sea {
+        c = view.c_water;
+    }
+    // Eq. 6 only lengthens d: an edge short enough already is refused without it.
+    if lod_len <= c * d {
+        return false;
+    }
     var outside = f64(0.0);
     for (var i = 0u; i < 4u; i++) {
         outside = max(outside, -dot3(triple(view.planes[i]), rel) - radius);
     }
     let q = outside / (max(len + radius, f64(1e-3)) * view.falloff);
     d = d * (f64(1.0) + view.c_lod * q * q); // eq. 6
-    var c = view.c_land;
-    if sea {
-        c = view.c_water;
-    }
     return lod_len > c * d;
 }
 

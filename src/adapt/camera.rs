@@ -296,7 +296,14 @@ impl View {
             return false;
         }
         let rel = centre - self.eye;
-        let d = (rel.length() - radius).max(1e-3);
+        let dist = rel.length();
+        let d = (dist - radius).max(1e-3);
+        let c = if sea { self.c_water } else { self.c_land };
+        // Eq. 6 below only lengthens `d` (by a factor >= 1, and rounding is monotonic), so an
+        // edge short enough already is refused without it — the same answer, sooner.
+        if lod_len <= c * d {
+            return false;
+        }
         let mut outside: f64 = 0.0;
         for n in &self.planes {
             outside = outside.max(-n.dot(rel) - radius);
@@ -305,9 +312,8 @@ impl View {
         // ball's distance outside the side planes over its farthest distance from the eye (an
         // angle-like ratio that can only grow from a ball to a ball inside it), in units of the
         // half-field of view.
-        let q = outside / ((rel.length() + radius).max(1e-3) * self.falloff);
+        let q = outside / ((dist + radius).max(1e-3) * self.falloff);
         let d = d * (1.0 + C_LOD * q * q); // eq. 6
-        let c = if sea { self.c_water } else { self.c_land };
         lod_len > c * d
     }
 }
