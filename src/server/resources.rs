@@ -170,7 +170,7 @@ pub async fn get(
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
     let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
     let gpu = state.adaption.clone();
-    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu)).await
+    cached(state, entry, derived, headers, move |planet| Ok(render(res, &job, &planet, &params, gpu))).await
 }
 
 /// One answer derived from a built planet: its route below the planet and normalised query
@@ -188,22 +188,9 @@ pub fn cache_key(id: &str, route: &str, norm: &str) -> String {
 
 /// Answers a derived file: 304 when `If-None-Match` lists its tag, from the cache, or by
 /// running `render` on the built planet (off the runtime, under a render permit, shared by
-/// concurrent requests) and caching the bytes; 409 while the planet is not built.
+/// concurrent requests) and caching the bytes; 409 while the planet is not built. An error from
+/// `render` is answered as it is and nothing is cached.
 pub async fn cached<F>(
-    state: Arc<AppState>,
-    entry: Arc<Entry>,
-    derived: Derived,
-    headers: HeaderMap,
-    render: F,
-) -> Result<Response, ApiError>
-where
-    F: FnOnce(Arc<Planet>) -> Vec<u8> + Send + 'static,
-{
-    cached_or_error(state, entry, derived, headers, move |planet| Ok(render(planet))).await
-}
-
-/// [`cached`] for work that can fail: an error is answered as it is and nothing is cached.
-pub async fn cached_or_error<F>(
     state: Arc<AppState>,
     entry: Arc<Entry>,
     derived: Derived,

@@ -8,7 +8,7 @@
 //! heavy-work permits.
 
 use super::error::ApiError;
-use super::resources::{cached_or_error, unknown_key, whole_number_in, Derived, DEFAULT_MAX_FACES};
+use super::resources::{cached, unknown_key, whole_number_in, Derived, DEFAULT_MAX_FACES};
 use super::state::AppState;
 use crate::render::{self, ImageFormat, RenderError, Shot};
 use axum::extract::{Path, RawQuery, State};
@@ -71,7 +71,7 @@ async fn snapshot(
     let norm = format!("{}&max_faces={max_faces}", shot.to_query());
     let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
     let gpu = state.adaption.clone();
-    cached_or_error(state, entry, derived, h, move |planet| {
+    cached(state, entry, derived, h, move |planet| {
         let cam = &shot.camera;
         let rgba =
             render::snapshot(renderer, &planet.mesh, &params, &shot, max_faces, gpu).map_err(|e| unavailable(&e))?;

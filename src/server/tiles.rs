@@ -34,7 +34,7 @@ pub async fn tileset(State(state): State<Arc<AppState>>, Path(id): Path<String>,
         let tiling = tiling(&shared, &owner, planet);
         let file = tiling.tileset_json(tiling.max_level());
         keep_contents(&shared, &id, file.contents);
-        file.json
+        Ok(file.json)
     })
     .await
 }
@@ -66,14 +66,14 @@ pub async fn tile(
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
-        match file {
+        Ok(match file {
             TileFile::Content(key) => tiling.content(key).glb,
             TileFile::Subtree(key) => {
                 let file = tiling.subtree_json(key, max_level).expect("checked to start a tileset");
                 keep_contents(&shared, &id, file.contents);
                 file.json
             }
-        }
+        })
     })
     .await
 }
