@@ -278,19 +278,39 @@ impl Adapter {
     /// of the target's (the base mesh, or one converged for a coarser target): every vertex it
     /// has or gains is wanted or needed by a wanted split, so no collapse can be due.
     fn run(&mut self, view: &View, cap: Option<usize>, refine_only: bool, stats: &mut AdaptStats) -> bool {
+        let (converged, dead_faces) = self.passes(view, cap, refine_only, stats);
+        if dead_faces > 0 {
+            let mut t = Instant::now();
+            compact::compact(&mut self.mesh);
+            lap(&mut t, &mut stats.stage_ms.compact);
+        }
+        converged
+    }
+
+    /// The passes of [`Adapter::run`]; also returns how many dead faces collapses left for the
+    /// final compaction. Collapses only mark what they remove, so the flags stay indexed by slot
+    /// and need answers only for the edges the collapses restored; the face cap counts live
+    /// faces. Compaction runs early only when the holes outgrow a quarter of the faces (or the
+    /// slack `N_ALLOC`).
+    fn passes(&mut self, view: &View, cap: Option<usize>, refine_only: bool, stats: &mut AdaptStats) -> (bool, usize) {
         let mut t = Instant::now();
         let mut wants = self.edge_wants(view);
         lap(&mut t, &mut stats.stage_ms.state);
         if refine_only && cap.is_some_and(|c| self.mesh.faces.len() + 2 * wants.iter().filter(|&&w| w).count() > c) {
-            return false; // see `wanted_exceed`
+            return (false, 0); // see `wanted_exceed`
         }
+        let mut dead_faces = 0;
         let mut look_for_collapses = true;
+        // Where the last collapses may have made more collapsible (None: look everywhere). Only
+        // the newest vertices of the faces a collapse restores can have become collapsible;
+        // elsewhere neither a vertex's faces nor the demanded edges changed.
+        let mut apexes: Option<Vec<u32>> = None;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
             // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
-            let over_cap = cap.is_some_and(|c| self.mesh.faces.len() > c);
+            let over_cap = cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c);
             if refine_only && over_cap {
-                return false;
+                return (false, dead_faces);
             }
             let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
@@ -303,13 +323,27 @@ impl Adapter {
             let mut collapses = 0;
             if !refine_only && (look_for_collapses || splits == 0) {
                 let demanded = state::demanded(&self.mesh, &wants);
-                let sites = state::collapse_candidates(&self.mesh, view, &demanded);
+                let mut sites = state::collapse_candidates(&self.mesh, view, &demanded, apexes.as_deref());
+                if sites.is_empty() && splits == 0 && apexes.is_some() {
+                    // Convergence is only declared after a look at every vertex.
+                    sites = state::collapse_candidates(&self.mesh, view, &demanded, None);
+                }
                 collapses = collapse::apply_collapses(&mut self.mesh, &sites);
                 lap(&mut t, &mut stats.stage_ms.collapse);
+                apexes = Some(state::restored_apexes(&sites));
                 if collapses > 0 {
-                    compact::compact(&mut self.mesh);
-                    lap(&mut t, &mut stats.stage_ms.compact);
-                    wants = self.edge_wants(view);
+                    dead_faces += 2 * collapses;
+                    if dead_faces > compact::N_ALLOC.max(self.mesh.faces.len() / 4) {
+                        // Many holes: squeeze them out now (and decide every edge again) so
+                        // that memory stays within the slack policy.
+                        compact::compact(&mut self.mesh);
+                        dead_faces = 0;
+                        apexes = None;
+                        lap(&mut t, &mut stats.stage_ms.compact);
+                        wants = self.edge_wants(view);
+                    } else {
+                        state::update_after_collapses(&self.mesh, view, &mut wants, &sites);
+                    }
                     lap(&mut t, &mut stats.stage_ms.state);
                 }
             }
@@ -317,13 +351,14 @@ impl Adapter {
             stats.splits += splits;
             stats.collapses += collapses;
             if splits == 0 && collapses == 0 {
-                return !over_cap;
+                return (!over_cap, dead_faces);
             }
-            if !over_cap && cap.is_some_and(|c| self.mesh.faces.len() > c) {
+            if !over_cap && cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c) {
                 look_for_collapses = true;
+                apexes = None;
             }
         }
-        false
+        (false, dead_faces)
     }
 }
 

@@ -35,6 +35,20 @@ pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[
     }
 }
 
+/// Brings `flags` up to date after collapses: the removed edges want nothing, and each restored
+/// edge (`e1` of its site) gets its answer again.
+pub fn update_after_collapses(mesh: &Mesh, view: &View, flags: &mut [bool], sites: &[CollapseSite]) {
+    let redo: Vec<(u32, bool)> = sites.par_iter().map(|s| (s.e[0], wants(mesh, view, s.e[0]))).collect();
+    for s in sites {
+        for e in &s.e[1..] {
+            flags[*e as usize] = false;
+        }
+    }
+    for (e, w) in redo {
+        flags[e as usize] = w;
+    }
+}
+
 /// Edges that must be split for the wanted ones to be: the wanted edges and every refinement
 /// edge on their blocking chains. A vertex whose faces hold such an edge must not collapse, or a
 /// forced split would be undone as soon as it is made.
@@ -49,22 +63,33 @@ pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
 
 /// Vertices that may collapse now: made by a split, their four faces untouched since, no edge of
 /// those faces demanded (see [`demanded`]), and the edge they were split from no longer wanting one.
-pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool]) -> Vec<CollapseSite> {
-    (0..mesh.vertices.len() as u32)
-        .into_par_iter()
-        .filter_map(|v| {
-            if mesh.vertices[v as usize].level == 0 {
-                return None;
-            }
-            let site = mesh.collapse_site(v)?;
-            let faces_quiet = site.f.iter().all(|&f| mesh.faces[f as usize].e.iter().all(|&e| !demanded[e as usize]));
-            if !faces_quiet {
-                return None;
-            }
-            let [lod_len, lod_radius] = mesh.vertices[v as usize].parent_lod;
-            let centre = (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5;
-            let sea = mesh.edges[site.e[0] as usize].kind == EdgeKind::Sea;
-            (!view.wants_split(lod_len as f64, centre, lod_radius as f64, sea)).then_some(site)
-        })
-        .collect()
+/// Looks at the vertices `among`, or at all of them.
+pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: Option<&[u32]>) -> Vec<CollapseSite> {
+    let check = |v: u32| {
+        if mesh.vertices[v as usize].level == 0 {
+            return None;
+        }
+        let site = mesh.collapse_site(v)?;
+        let faces_quiet = site.f.iter().all(|&f| mesh.faces[f as usize].e.iter().all(|&e| !demanded[e as usize]));
+        if !faces_quiet {
+            return None;
+        }
+        let [lod_len, lod_radius] = mesh.vertices[v as usize].parent_lod;
+        let centre = (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5;
+        let sea = mesh.edges[site.e[0] as usize].kind == EdgeKind::Sea;
+        (!view.wants_split(lod_len as f64, centre, lod_radius as f64, sea)).then_some(site)
+    };
+    match among {
+        Some(vertices) => vertices.par_iter().filter_map(|&v| check(v)).collect(),
+        None => (0..mesh.vertices.len() as u32).into_par_iter().filter_map(check).collect(),
+    }
+}
+
+/// The vertices that collapsing `sites` can have made collapsible: the newest vertices `t` and
+/// `d` of the two faces each collapse restored, sorted and without repeats.
+pub fn restored_apexes(sites: &[CollapseSite]) -> Vec<u32> {
+    let mut out: Vec<u32> = sites.iter().flat_map(|s| [s.t, s.d]).collect();
+    out.par_sort_unstable();
+    out.dedup();
+    out
 }
