@@ -69,6 +69,13 @@ pub struct StageTimes {
     pub compact: f64,
 }
 
+/// Whether refining a mesh of `faces` faces with split wishes `wants`, a sub-refinement of the
+/// target's converged mesh, must exceed `max` faces: each edge that wants a split is split in
+/// the converged mesh (a wish depends on the edge alone), and each split adds two faces.
+fn wishes_exceed(faces: usize, wants: &[bool], max: usize) -> bool {
+    faces + 2 * wants.iter().filter(|&&w| w).count() > max
+}
+
 /// Adds the time since `t` to `slot` and restarts `t`.
 fn lap(t: &mut Instant, slot: &mut f64) {
     *slot += t.elapsed().as_secs_f64() * 1000.0;
@@ -154,7 +161,7 @@ impl Adapter {
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };
         let step = match max_faces {
             None => {
-                stats.converged = self.run(&self.view(cam, 0), None, self.fresh, &mut stats);
+                stats.converged = self.run(&self.view(cam, 0), None, self.fresh, None, &mut stats);
                 0
             }
             Some(max) => self.fit_budget(cam, max, &mut stats),
@@ -201,8 +208,16 @@ impl Adapter {
         loop {
             let view = self.view(cam, k);
             // A finer trial from the fitted mesh is over the budget before it starts if the
-            // fitted mesh's wanted splits alone would exceed it (no copy needed to know).
-            let hopeless = !first && fits.as_mut().is_some_and(|(_, m)| self.wanted_exceed(m, &view, max));
+            // fitted mesh's wanted splits alone would exceed it (no copy needed to know);
+            // otherwise the trial starts from a copy with those wishes.
+            let wishes = match fits.as_mut() {
+                Some((_, m)) => Some(self.wishes_of(m, &view)),
+                _ => None,
+            };
+            let hopeless = match (&fits, &wishes) {
+                (Some((_, m)), Some(w)) => wishes_exceed(m.faces.len(), w, max),
+                _ => false,
+            };
             let (converged, faces) = if hopeless {
                 (false, max + 1)
             } else {
@@ -215,7 +230,7 @@ impl Adapter {
                 // Later trials start from the base mesh or one that fitted a coarser target:
                 // both are sub-refinements of this target's mesh, so they only refine.
                 let refine_only = !first || self.fresh;
-                let converged = self.run(&view, Some(max), refine_only, stats);
+                let converged = self.run(&view, Some(max), refine_only, wishes, stats);
                 (converged, self.mesh.faces.len())
             };
             first = false;
@@ -247,14 +262,12 @@ impl Adapter {
         k
     }
 
-    /// Whether refining `mesh`, a sub-refinement of `view`'s converged mesh, must exceed `max`
-    /// faces: each of its edges that wants a split is split in the converged mesh (a wish
-    /// depends on the edge alone), and each split adds two faces.
-    fn wanted_exceed(&mut self, mesh: &mut Mesh, view: &View, max: usize) -> bool {
+    /// The state update's split wishes of the edges of `mesh` (lent to the adapter for it).
+    fn wishes_of(&mut self, mesh: &mut Mesh, view: &View) -> Vec<bool> {
         std::mem::swap(&mut self.mesh, mesh);
-        let wanted = self.edge_wants(view).iter().filter(|&&w| w).count();
+        let wishes = self.edge_wants(view);
         std::mem::swap(&mut self.mesh, mesh);
-        mesh.faces.len() + 2 * wanted > max
+        wishes
     }
 
     /// How many steps finer than a fitting mesh of `faces` faces the budget `max` allows, by
@@ -277,8 +290,16 @@ impl Adapter {
     /// convergence is declared — except with `refine_only`, for a mesh that is a sub-refinement
     /// of the target's (the base mesh, or one converged for a coarser target): every vertex it
     /// has or gains is wanted or needed by a wanted split, so no collapse can be due.
-    fn run(&mut self, view: &View, cap: Option<usize>, refine_only: bool, stats: &mut AdaptStats) -> bool {
-        let (converged, dead_faces) = self.passes(view, cap, refine_only, stats);
+    /// `wishes`, when given, are the state update's answers for the mesh as it is.
+    fn run(
+        &mut self,
+        view: &View,
+        cap: Option<usize>,
+        refine_only: bool,
+        wishes: Option<Vec<bool>>,
+        stats: &mut AdaptStats,
+    ) -> bool {
+        let (converged, dead_faces) = self.passes(view, cap, refine_only, wishes, stats);
         if dead_faces > 0 {
             let mut t = Instant::now();
             compact::compact(&mut self.mesh);
@@ -292,12 +313,22 @@ impl Adapter {
     /// and need answers only for the edges the collapses restored; the face cap counts live
     /// faces. Compaction runs early only when the holes outgrow a quarter of the faces (or the
     /// slack `N_ALLOC`).
-    fn passes(&mut self, view: &View, cap: Option<usize>, refine_only: bool, stats: &mut AdaptStats) -> (bool, usize) {
+    fn passes(
+        &mut self,
+        view: &View,
+        cap: Option<usize>,
+        refine_only: bool,
+        wishes: Option<Vec<bool>>,
+        stats: &mut AdaptStats,
+    ) -> (bool, usize) {
         let mut t = Instant::now();
-        let mut wants = self.edge_wants(view);
+        let mut wants = match wishes {
+            Some(w) => w,
+            None => self.edge_wants(view),
+        };
         lap(&mut t, &mut stats.stage_ms.state);
-        if refine_only && cap.is_some_and(|c| self.mesh.faces.len() + 2 * wants.iter().filter(|&&w| w).count() > c) {
-            return (false, 0); // see `wanted_exceed`
+        if refine_only && cap.is_some_and(|c| wishes_exceed(self.mesh.faces.len(), &wants, c)) {
+            return (false, 0);
         }
         let mut dead_faces = 0;
         let mut look_for_collapses = true;

@@ -198,7 +198,7 @@ fn face_budget_takes_the_finest_target_that_fits_from_any_start() {
         let converge = |step: i32| {
             let mut b = Adapter::new(base().mesh.clone(), Params::default());
             let view = b.view(&cam, step);
-            assert!(b.run(&view, None, false, &mut AdaptStats::default()));
+            assert!(b.run(&view, None, false, None, &mut AdaptStats::default()));
             b.mesh
         };
         assert!(canonical(a.mesh()) == canonical(&converge(k)));

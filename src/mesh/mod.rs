@@ -249,8 +249,12 @@ impl Mesh {
 
     /// Unit normal of face `f` (counter-clockwise winding), unnormalised area vector halved.
     pub fn face_area_vector(&self, f: u32) -> DVec3 {
-        let face = &self.faces[f as usize];
-        let [a, b, c] = face.v.map(|v| self.pos(v));
+        self.triangle_area_vector(self.faces[f as usize].v)
+    }
+
+    /// Area vector of the triangle with corners `v` (counter-clockwise): normal times area.
+    pub fn triangle_area_vector(&self, v: [u32; 3]) -> DVec3 {
+        let [a, b, c] = v.map(|v| self.pos(v));
         (b - a).cross(c - a) * 0.5
     }
 

@@ -72,13 +72,7 @@ pub fn border_normals(
     let mesh = refiner.mesh();
     for (s, &id) in ids.iter().enumerate() {
         if let Some(faces) = ring.get(&id) {
-            let mut areas: Vec<DVec3> = faces
-                .iter()
-                .map(|t| {
-                    let [a, b, c] = t.map(|v| mesh.pos(v));
-                    (b - a).cross(c - a) * 0.5
-                })
-                .collect();
+            let mut areas: Vec<DVec3> = faces.iter().map(|&t| mesh.triangle_area_vector(t)).collect();
             areas.sort_by_key(|n| n.to_array().map(f64::to_bits));
             let n = areas.iter().fold(DVec3::ZERO, |acc, &n| acc + n).normalize_or_zero();
             normals[s] = if n == DVec3::ZERO { mesh.pos(id).normalize_or_zero() } else { n };
