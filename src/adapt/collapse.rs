@@ -5,8 +5,6 @@ use crate::mesh::{CollapseSite, Mesh};
 
 /// Collapses every site; the removed entities stay marked dead until compaction.
 pub fn apply_collapses(mesh: &mut Mesh, sites: &[CollapseSite]) -> usize {
-    for site in sites {
-        mesh.collapse_vertex(site);
-    }
+    mesh.collapse_vertices(sites);
     sites.len()
 }

@@ -1,18 +1,35 @@
 //! Memory management and buffer compaction (paper §5.2, §5.5): dead entities are squeezed out,
 //! and buffer capacity follows the face count with `n_alloc` slack — grown to `n + n_alloc`
 //! when short, shrunk back when above `n + 2 n_alloc`.
+//!
+//! Compaction can also put the buffers in spatial order (`Mesh::compact_in_spatial_order`): a
+//! pass over an ordered mesh reads its neighbours from nearby memory, ~3 times faster than over
+//! a mesh whose entities were appended split by split, but ordering costs ~15 such passes. So a
+//! mesh kept between cameras is ordered once the faces appended since its last ordering
+//! outnumber the ordered ones ([`scattered`]); other compactions keep the order.
 
 use crate::mesh::Mesh;
 
 /// Slack kept in the buffers, in faces (vertices and edges scale with it).
 pub const N_ALLOC: usize = 65_536;
 
-/// Removes dead entities and keeps capacities within the slack policy.
-pub fn compact(mesh: &mut Mesh) {
-    mesh.compact();
+/// Removes dead entities (in spatial order with `spatial`) and keeps capacities within the
+/// slack policy.
+pub fn compact(mesh: &mut Mesh, spatial: bool) {
+    if spatial {
+        mesh.compact_in_spatial_order();
+    } else {
+        mesh.compact();
+    }
     fit(&mut mesh.faces, N_ALLOC);
     fit(&mut mesh.edges, N_ALLOC * 3 / 2);
     fit(&mut mesh.vertices, N_ALLOC / 2);
+}
+
+/// Whether a mesh of `faces` faces, `ordered` of which were in spatial order, is worth ordering
+/// again: more of it appended than ordered.
+pub fn scattered(faces: usize, ordered: usize) -> bool {
+    faces > 2 * ordered
 }
 
 fn fit<T>(buf: &mut Vec<T>, slack: usize) {

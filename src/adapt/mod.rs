@@ -93,6 +93,8 @@ pub struct Adapter {
     fresh: bool,
     /// Step of the last budget search (see [`Adapter::fit_budget`]); `None` before the first.
     last_step: Option<i32>,
+    /// Faces of the mesh when its buffers were last put in spatial order (see `compact.rs`).
+    ordered_faces: usize,
     /// The device for the stages that run on the GPU backend; `None` on the CPU backend.
     #[cfg(feature = "gpu")]
     gpu: Option<std::sync::Arc<gpu::GpuAdaption>>,
@@ -104,6 +106,7 @@ impl Adapter {
         Adapter {
             mesh: base.clone(),
             params,
+            ordered_faces: base.faces.len(),
             base,
             fresh: true,
             last_step: None,
@@ -159,6 +162,12 @@ impl Adapter {
     pub fn adapt(&mut self, cam: &Camera, max_faces: Option<usize>) -> AdaptStats {
         let start = Instant::now();
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };
+        if compact::scattered(self.mesh.faces.len(), self.ordered_faces) {
+            // Kept between cameras, the mesh is worth ordering once most of it was appended.
+            let mut t = Instant::now();
+            self.compact();
+            lap(&mut t, &mut stats.stage_ms.compact);
+        }
         let step = match max_faces {
             None => {
                 stats.converged = self.run(&self.view(cam, 0), None, self.fresh, None, &mut stats);
@@ -262,6 +271,14 @@ impl Adapter {
         k
     }
 
+    /// Compacts the mesh, in spatial order when it is [`compact::scattered`].
+    fn compact(&mut self) {
+        let spatial = compact::scattered(self.mesh.faces.len(), self.ordered_faces);
+        compact::compact(&mut self.mesh, spatial);
+        self.ordered_faces =
+            if spatial { self.mesh.faces.len() } else { self.ordered_faces.min(self.mesh.faces.len()) };
+    }
+
     /// The state update's split wishes of the edges of `mesh` (lent to the adapter for it).
     fn wishes_of(&mut self, mesh: &mut Mesh, view: &View) -> Vec<bool> {
         std::mem::swap(&mut self.mesh, mesh);
@@ -302,7 +319,7 @@ impl Adapter {
         let (converged, dead_faces) = self.passes(view, cap, refine_only, wishes, stats);
         if dead_faces > 0 {
             let mut t = Instant::now();
-            compact::compact(&mut self.mesh);
+            self.compact();
             lap(&mut t, &mut stats.stage_ms.compact);
         }
         converged
@@ -367,7 +384,7 @@ impl Adapter {
                     if dead_faces > compact::N_ALLOC.max(self.mesh.faces.len() / 4) {
                         // Many holes: squeeze them out now (and decide every edge again) so
                         // that memory stays within the slack policy.
-                        compact::compact(&mut self.mesh);
+                        self.compact();
                         dead_faces = 0;
                         apexes = None;
                         lap(&mut t, &mut stats.stage_ms.compact);

@@ -46,7 +46,7 @@ pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
 }
 
 /// Splits the given ready edges; each owns its two faces, so the new vertices are computed in
-/// parallel and the topology is then changed edge by edge. Returns the number of splits; the
+/// parallel and then written in parallel (see [`Mesh::split_edges`]). Returns the number of splits; the
 /// split edges' slots now hold their first halves.
 pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
     let made: Vec<(SplitSite, Vertex, [EdgeKind; 4])> = edges
@@ -57,5 +57,5 @@ pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
             (site, v, kinds)
         })
         .collect();
-    mesh.split_edges(&made).len()
+    mesh.split_edges(&made)
 }

@@ -93,6 +93,12 @@ fn same_mesh_whatever_the_path() {
     assert!(sab.collapses > 0, "the path through A must coarsen something: {sab:?}");
     assert_eq!(direct.faces.len(), via_a.faces.len());
     assert!(canonical(&direct) == canonical(&via_a), "meshes differ");
+    // Spatial order is a function of the mesh alone: both paths compact to equal buffers.
+    let (mut direct, mut via_a) = (direct, via_a);
+    direct.compact_in_spatial_order();
+    via_a.compact_in_spatial_order();
+    direct.validate().unwrap();
+    assert!(direct == via_a, "spatially ordered buffers differ");
 }
 
 #[test]

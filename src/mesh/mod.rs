@@ -12,8 +12,10 @@
 //! rounding error.
 
 pub mod altitude;
+mod batch;
 mod collapse;
 mod kinds;
+mod order;
 mod split;
 pub mod terrain;
 pub mod validate;

@@ -27,9 +27,17 @@ fn split_then_collapse_restores_the_mesh() {
     let c = m.collapse_site(s.v).expect("fresh split vertex collapses");
     assert_eq!(c.e, s.e);
     m.collapse_vertex(&c);
+    let mut spatial = m.clone();
     m.compact();
     m.validate().unwrap();
     assert_eq!(m, base);
+    // Spatial order depends on the mesh alone: the base mesh compacts to the same buffers.
+    spatial.compact_in_spatial_order();
+    spatial.validate().unwrap();
+    assert_ne!(spatial, base);
+    let mut base = base;
+    base.compact_in_spatial_order();
+    assert_eq!(spatial, base);
 }
 
 #[test]
@@ -122,4 +130,39 @@ fn adjacency_lists_every_edge_twice() {
         assert_eq!(m.edges[e as usize].other(v), w);
     }
     assert!(DVec3::from_array(m.vertices[0].pos).length() > 0.0);
+}
+
+#[test]
+fn batches_of_splits_and_collapses_equal_one_at_a_time() {
+    // Every ready edge of a refined sphere split at once (many share outer edges and corners),
+    // then every collapsible vertex collapsed at once: the same buffers as one by one in order.
+    let mut m = sphere(4000);
+    let mut make = |m: &Mesh, site: &SplitSite| (midpoint_vertex(m, site), [EdgeKind::Sea; 4]);
+    let mut rng = crate::rng::Sequence::new(5, 5);
+    for _ in 0..300 {
+        let e = rng.below(m.edges.len()) as u32;
+        m.refine_edge(e, &mut make);
+    }
+    let items: Vec<(SplitSite, Vertex, [EdgeKind; 4])> = (0..m.edges.len() as u32)
+        .filter_map(|e| m.split_site(e))
+        .map(|s| (s, midpoint_vertex(&m, &s), [EdgeKind::Sea; 4]))
+        .collect();
+    assert!(items.len() > 1000, "{}", items.len());
+    let (mut batch, mut single) = (m.clone(), m.clone());
+    assert_eq!(batch.split_edges(&items), items.len());
+    for (site, v, kinds) in &items {
+        single.split_edge(site, *v, *kinds);
+    }
+    batch.validate().unwrap();
+    assert!(batch == single, "split batch differs");
+
+    let sites: Vec<CollapseSite> = (0..batch.vertices.len() as u32).filter_map(|v| batch.collapse_site(v)).collect();
+    assert!(sites.len() >= items.len(), "{}", sites.len());
+    batch.collapse_vertices(&sites);
+    for site in &sites {
+        single.collapse_vertex(site);
+    }
+    assert!(batch == single, "collapse batch differs");
+    batch.compact();
+    batch.validate().unwrap();
 }

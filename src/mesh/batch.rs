@@ -1,0 +1,153 @@
+//! Batches of splits and collapses written from many threads at once (paper §5.3 Algorithm 2,
+//! §5.4 Algorithm 3).
+//!
+//! The paper's conflict rules make a batch race-free: a split owns its edge and its two faces, a
+//! collapse its vertex, four edges and four faces, and no two operations of a batch own the same
+//! entity. What neighbours can share is an outer edge, of which each operation relinks only the
+//! face slot of its own face, and a corner vertex, whose edge link only the operation that owns
+//! the linked edge moves. Those two writes are single-word atomic stores (and the relink reads
+//! the slot atomically); every other access touches owned entities or reads positions, which no
+//! operation of a batch changes.
+
+use super::split::{round_down, DEAD};
+use super::{CollapseSite, Edge, EdgeKind, Face, SplitSite, Vertex, VertexFlags, LOD_RADIUS};
+use glam::DVec3;
+use std::ptr::{addr_of, addr_of_mut};
+use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+
+/// Raw pointers to the three buffers, shared by the threads of one batch.
+pub(super) struct Buffers {
+    pub v: *mut Vertex,
+    pub e: *mut Edge,
+    pub f: *mut Face,
+    /// Lengths of the vertex, edge and face buffers before the batch (where new slots start).
+    pub sizes: (usize, usize, usize),
+}
+
+// SAFETY: the threads of a batch write disjoint entities (module doc) or single atomic words.
+unsafe impl Sync for Buffers {}
+unsafe impl Send for Buffers {}
+
+impl Buffers {
+    /// Position of vertex `v`, reading that field alone.
+    unsafe fn pos(&self, v: u32) -> DVec3 {
+        DVec3::from_array(addr_of!((*self.v.add(v as usize)).pos).read())
+    }
+
+    /// The edge link of vertex `v`, as an atomic word.
+    unsafe fn link(&self, v: u32) -> &AtomicU32 {
+        &*(addr_of_mut!((*self.v.add(v as usize)).edge) as *const AtomicU32)
+    }
+
+    /// In edge `e`, replaces face `from` by face `to` (atomically: the other slot may belong to
+    /// a neighbour of the same batch).
+    unsafe fn relink(&self, e: u32, from: u32, to: u32) {
+        let slots = addr_of_mut!((*self.e.add(e as usize)).f) as *mut u32;
+        let first = &*(slots as *const AtomicU32);
+        if first.load(Relaxed) == from {
+            first.store(to, Relaxed);
+        } else {
+            (*(slots.add(1) as *const AtomicU32)).store(to, Relaxed);
+        }
+    }
+
+    /// Moves vertex `v`'s edge link from `gone` to `keep` if it points to `gone`.
+    unsafe fn move_link(&self, v: u32, gone: u32, keep: u32) {
+        let _ = self.link(v).compare_exchange(gone, keep, Relaxed, Relaxed);
+    }
+
+    /// The `i`-th split of a batch (see [`super::Mesh::split_ids`] for its ids).
+    ///
+    /// # Safety
+    /// The buffers hold room for the batch's new slots, `site` is a ready split site, and no
+    /// other operation of the batch owns its edge or faces.
+    pub unsafe fn split(&self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4], i: usize) {
+        let SplitSite { edge: e1, a, b, t, d, f1, f2 } = *site;
+        let (nv, ne, nf) = self.sizes;
+        let m = (nv + i) as u32;
+        let e2 = (ne + 3 * i) as u32;
+        let (e3, e4) = (e2 + 1, e2 + 2);
+        let f3 = (nf + 2 * i) as u32;
+        let f4 = f3 + 1;
+        let old1 = self.f.add(f1 as usize).read();
+        let old2 = self.f.add(f2 as usize).read();
+        let parent = self.e.add(e1 as usize).read();
+        let level = parent.level + 1;
+        let (pa, pb, pm) = (self.pos(a), self.pos(b), vertex.p());
+        let parent_mid = (pa + pb) * 0.5;
+
+        // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
+        let face = |v: [u32; 3], e: [u32; 3], kind| Face { v, e, kind, _pad: [0; 3] };
+        self.f.add(f1 as usize).write(face([m, t, a], [old1.e[2], e1, e2], old1.kind));
+        self.f.add(f2 as usize).write(face([m, a, d], [old2.e[1], e4, e1], old2.kind));
+        self.f.add(f3 as usize).write(face([m, b, t], [old1.e[1], e2, e3], old1.kind));
+        self.f.add(f4 as usize).write(face([m, d, b], [old2.e[2], e3, e4], old2.kind));
+        let edge = |v: [u32; 2], f: [u32; 2], kind, p: DVec3, q: DVec3| {
+            let length = p.distance(q) as f32;
+            let offset = ((p + q) * 0.5).distance(parent_mid);
+            Edge {
+                v,
+                f,
+                length,
+                lod_len: length.min(parent.lod_len),
+                lod_radius: (LOD_RADIUS * length).min(round_down(parent.lod_radius as f64 - offset)),
+                level,
+                kind,
+                _pad: 0,
+            }
+        };
+        self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], pa, pm));
+        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], pm, self.pos(t)));
+        self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], pm, pb));
+        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], pm, self.pos(d)));
+        vertex.edge = e1;
+        vertex.parent_lod = [parent.lod_len, parent.lod_radius];
+        vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
+        self.v.add(m as usize).write(vertex);
+        self.relink(old1.e[1], f1, f3);
+        self.relink(old2.e[2], f2, f4);
+        self.move_link(b, e1, e3);
+    }
+
+    /// Collapses the vertex at `site`, restoring the edge and the two faces it was split from;
+    /// the removed vertex, edges and faces are marked dead.
+    ///
+    /// # Safety
+    /// `site` is a collapse site of the mesh and no other operation of the batch owns its
+    /// vertex, edges or faces.
+    pub unsafe fn collapse(&self, site: &CollapseSite) {
+        let CollapseSite { v: m, e: [e1, e2, e3, e4], f: [f1, f2, f3, f4], a, b, t, d } = *site;
+        let face = |f: u32| self.f.add(f as usize);
+        let (x1, x2, x3, x4) = (face(f1).read(), face(f2).read(), face(f3).read(), face(f4).read());
+        let (bt, ta, ad, db) = (x3.e[0], x1.e[0], x2.e[0], x4.e[0]);
+        face(f1).write(Face { v: [t, a, b], e: [e1, bt, ta], ..x1 });
+        face(f2).write(Face { v: [d, b, a], e: [e1, ad, db], ..x2 });
+        self.relink(bt, f3, f1);
+        self.relink(db, f4, f2);
+
+        let edge1 = self.e.add(e1 as usize);
+        let (k1, k3) = ((*edge1).kind, (*self.e.add(e3 as usize)).kind);
+        let kind = if k1 == k3 || k3 == EdgeKind::River { k1 } else { k3 };
+        let [lod_len, lod_radius] = addr_of!((*self.v.add(m as usize)).parent_lod).read();
+        let old = edge1.read();
+        edge1.write(Edge {
+            v: [a, b],
+            length: self.pos(a).distance(self.pos(b)) as f32,
+            lod_len,
+            lod_radius,
+            level: old.level - 1,
+            kind,
+            ..old
+        });
+        for (v, gone, keep) in [(b, e3, e1), (t, e2, ta), (d, e4, ad)] {
+            self.move_link(v, gone, keep);
+        }
+        self.link(m).store(DEAD, Relaxed);
+        for e in [e2, e3, e4] {
+            addr_of_mut!((*self.e.add(e as usize)).v).write([DEAD; 2]);
+        }
+        for f in [f3, f4] {
+            addr_of_mut!((*self.f.add(f as usize)).v).write([DEAD; 3]);
+        }
+    }
+}

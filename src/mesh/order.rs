@@ -1,0 +1,177 @@
+//! Buffer compaction (paper §5.5): dead entities are squeezed out and the live ones renumbered
+//! in spatial order, so that neighbours in the mesh are neighbours in memory.
+//!
+//! Splits append their entities where the buffers end, so after a refinement the corners of a
+//! face lie far apart in memory and every pass over the mesh waits on memory. Compaction sorts
+//! the vertices along a Morton curve of their direction from the planet's centre (ties by
+//! position), the edges by their ends' new indices and the faces by their corners', which makes
+//! the order a function of the mesh alone: two paths to the same mesh compact to equal buffers.
+
+use super::split::DEAD;
+use super::{Mesh, NONE};
+use rayon::prelude::*;
+
+/// Morton code (21 bits per axis) of the direction of `p` from the planet's centre.
+fn morton(p: [f64; 3]) -> u64 {
+    let len = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt().max(f64::MIN_POSITIVE);
+    let q = |x: f64| (((x / len) * 0.5 + 0.5).clamp(0.0, 1.0) * ((1u64 << 21) - 1) as f64) as u64;
+    spread(q(p[0])) | spread(q(p[1])) << 1 | spread(q(p[2])) << 2
+}
+
+/// Moves bit `i` of the low 21 bits of `x` to bit `3 i`.
+fn spread(x: u64) -> u64 {
+    let mut x = x & 0x1f_ffff;
+    x = (x | x << 32) & 0x001f_0000_0000_ffff;
+    x = (x | x << 16) & 0x001f_0000_ff00_00ff;
+    x = (x | x << 8) & 0x100f_00f0_0f00_f00f;
+    x = (x | x << 4) & 0x10c3_0c30_c30c_30c3;
+    x = (x | x << 2) & 0x1249_2492_4924_9249;
+    x
+}
+
+/// Old ids of the items with a key, in increasing key order.
+fn sorted_order<T: Sync>(items: &[T], key: impl Fn(&T) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
+    let mut keyed: Vec<(u32, u64, u32)> =
+        items.par_iter().enumerate().filter_map(|(i, x)| key(x).map(|(k, r)| (k, r, i as u32))).collect();
+    keyed.par_sort_unstable();
+    keyed.into_par_iter().map(|(_, _, i)| i).collect()
+}
+
+/// New id of each old id in `order` (dead ids map to [`DEAD`]).
+fn inverse(order: &[u32], len: usize) -> Vec<u32> {
+    let mut map = vec![DEAD; len];
+    for (new, &old) in order.iter().enumerate() {
+        map[old as usize] = new as u32;
+    }
+    map
+}
+
+/// The live items moved to their new ids (`map`, [`DEAD`] for dead ones; a bijection onto
+/// `0..len`), each changed by `update`. Reads the old buffer in order and writes in parallel.
+fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: impl Fn(&mut T) + Sync) -> Vec<T> {
+    struct Out<T>(*mut T);
+    // SAFETY: the threads write disjoint slots (the map is injective on live items).
+    unsafe impl<T> Sync for Out<T> {}
+    impl<T> Out<T> {
+        /// SAFETY: `i` is within the capacity and written by no other thread.
+        unsafe fn write(&self, i: usize, x: T) {
+            self.0.add(i).write(x)
+        }
+    }
+    let mut out: Vec<T> = Vec::with_capacity(len);
+    let dst = &Out(out.as_mut_ptr());
+    items.par_iter().zip(map.par_iter()).with_min_len(4096).for_each(|(x, &new)| {
+        if new != DEAD {
+            let mut x = *x;
+            update(&mut x);
+            debug_assert!((new as usize) < len);
+            // SAFETY: `new < len` is within the capacity and no other item maps to it.
+            unsafe { dst.write(new as usize, x) };
+        }
+    });
+    // SAFETY: the map is onto `0..len`, so every slot was written.
+    unsafe { out.set_len(len) };
+    out
+}
+
+/// `map[x]`, keeping the absent marker.
+#[inline]
+fn renumbered(map: &[u32], x: u32) -> u32 {
+    if x == NONE {
+        NONE
+    } else {
+        map[x as usize]
+    }
+}
+
+/// New ids keeping the order of the live items (`dead` ones map to [`DEAD`]), and their count.
+fn kept_order<T: Sync>(items: &[T], dead: impl Fn(&T) -> bool + Sync) -> (Vec<u32>, usize) {
+    let mut map: Vec<u32> = items.par_iter().map(|x| if dead(x) { DEAD } else { 0 }).collect();
+    let mut next = 0u32;
+    for m in map.iter_mut().filter(|m| **m != DEAD) {
+        *m = next;
+        next += 1;
+    }
+    (map, next as usize)
+}
+
+impl Mesh {
+    /// Removes dead vertices, edges and faces, keeping the order of the live ones and updating
+    /// every reference.
+    pub fn compact(&mut self) {
+        let (vmap, nv) = kept_order(&self.vertices, |v| v.edge == DEAD);
+        let (emap, ne) = kept_order(&self.edges, |e| e.v[0] == DEAD);
+        let (fmap, nf) = kept_order(&self.faces, |f| f.v[0] == DEAD);
+        if (nv, ne, nf) != (self.vertices.len(), self.edges.len(), self.faces.len()) {
+            self.renumber(&vmap, &emap, &fmap, (nv, ne, nf));
+        }
+    }
+
+    /// Removes dead vertices, edges and faces and renumbers the live ones in spatial order
+    /// (module doc), updating every reference.
+    pub fn compact_in_spatial_order(&mut self) {
+        let mut vorder: Vec<(u64, u32)> = (0..self.vertices.len() as u32)
+            .into_par_iter()
+            .filter(|&v| self.vertices[v as usize].edge != DEAD)
+            .map(|v| (morton(self.vertices[v as usize].pos), v))
+            .collect();
+        let pos = |v: u32| self.vertices[v as usize].pos;
+        vorder.par_sort_unstable_by(|x, y| {
+            x.0.cmp(&y.0).then_with(|| {
+                let (p, q) = (pos(x.1), pos(y.1));
+                p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])).then(p[2].total_cmp(&q[2]))
+            })
+        });
+        let vorder: Vec<u32> = vorder.into_iter().map(|(_, v)| v).collect();
+        let vmap = inverse(&vorder, self.vertices.len());
+        let eorder = sorted_order(&self.edges, |e| {
+            let [a, b] = (e.v[0] != DEAD).then(|| e.v.map(|x| vmap[x as usize]))?;
+            Some((a.min(b), a.max(b) as u64))
+        });
+        let emap = inverse(&eorder, self.edges.len());
+        let forder = sorted_order(&self.faces, |f| {
+            let mut c = (f.v[0] != DEAD).then(|| f.v.map(|x| vmap[x as usize]))?;
+            c.sort_unstable();
+            Some((c[0], (c[1] as u64) << 32 | c[2] as u64))
+        });
+        let fmap = inverse(&forder, self.faces.len());
+        self.renumber(&vmap, &emap, &fmap, (vorder.len(), eorder.len(), forder.len()));
+    }
+
+    /// Moves every live entity to its new id and renumbers its references; `sizes` are the
+    /// live counts (each map is a bijection from the live ids onto `0..size`).
+    fn renumber(&mut self, vmap: &[u32], emap: &[u32], fmap: &[u32], sizes: (usize, usize, usize)) {
+        let (nv, ne, nf) = sizes;
+        self.vertices = scatter(&self.vertices, vmap, nv, |x| x.edge = renumbered(emap, x.edge));
+        self.edges = scatter(&self.edges, emap, ne, |x| {
+            x.v = x.v.map(|v| renumbered(vmap, v));
+            x.f = x.f.map(|f| renumbered(fmap, f));
+        });
+        self.faces = scatter(&self.faces, fmap, nf, |x| {
+            x.v = x.v.map(|v| renumbered(vmap, v));
+            x.e = x.e.map(|e| renumbered(emap, e));
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spread_moves_each_bit_three_apart() {
+        for x in [0u64, 1, 2, 0x15_5555, 0x1f_ffff, 0x12_3456, 0xff_ffff] {
+            let slow = (0..21).fold(0u64, |acc, i| acc | ((x >> i) & 1) << (3 * i));
+            assert_eq!(spread(x), slow, "{x:#x}");
+        }
+    }
+
+    #[test]
+    fn nearby_directions_get_nearby_codes() {
+        let a = morton([6.4e6, 1.0, 2.0]);
+        let b = morton([6.4e6, 3.0, 2.0]);
+        let far = morton([-6.4e6, 1.0, 2.0]);
+        assert!(a.abs_diff(b) < a.abs_diff(far));
+        assert_eq!(morton([1.0, 2.0, 3.0]), morton([2.0, 4.0, 6.0]));
+    }
+}
