@@ -13,12 +13,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// whoever reached it first, so chains that merge cost their shared part once. Returns, sorted
 /// and without repeats, every edge on a chain (`all`) or only the chain ends, which are ready.
 pub fn wanted_chains(mesh: &Mesh, wants: &[bool], all: bool) -> Vec<u32> {
-    let wanted: Vec<u32> = wants.iter().enumerate().filter(|(_, &w)| w).map(|(e, _)| e as u32).collect();
-    let seen: Vec<AtomicBool> = std::iter::repeat_with(|| AtomicBool::new(false)).take(mesh.edges.len()).collect();
+    let wanted: Vec<u32> = (0..wants.len() as u32).into_par_iter().filter(|&e| wants[e as usize]).collect();
+    let seen: Vec<AtomicBool> = (0..mesh.edges.len()).into_par_iter().map(|_| AtomicBool::new(false)).collect();
     let mut list: Vec<u32> = wanted
         .par_iter()
-        .flat_map_iter(|&e| {
-            let mut found = Vec::new();
+        .fold(Vec::new, |mut found, &e| {
             let mut x = e;
             while !seen[x as usize].swap(true, Ordering::Relaxed) {
                 let b = mesh.blocking_edge(x);
@@ -32,6 +31,7 @@ pub fn wanted_chains(mesh: &Mesh, wants: &[bool], all: bool) -> Vec<u32> {
             }
             found
         })
+        .flatten_iter()
         .collect();
     list.par_sort_unstable();
     list.dedup();
