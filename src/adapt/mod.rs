@@ -308,6 +308,11 @@ impl Adapter {
     /// of the target's (the base mesh, or one converged for a coarser target): every vertex it
     /// has or gains is wanted or needed by a wanted split, so no collapse can be due.
     /// `wishes`, when given, are the state update's answers for the mesh as it is.
+    ///
+    /// Collapses only mark what they remove, so the flags stay indexed by slot and need answers
+    /// only for the edges the collapses restored; the face cap counts live faces. The holes are
+    /// compacted once at the end, or early when they outgrow a quarter of the faces (or the
+    /// slack `N_ALLOC`).
     fn run(
         &mut self,
         view: &View,
@@ -316,28 +321,6 @@ impl Adapter {
         wishes: Option<Vec<bool>>,
         stats: &mut AdaptStats,
     ) -> bool {
-        let (converged, dead_faces) = self.passes(view, cap, refine_only, wishes, stats);
-        if dead_faces > 0 {
-            let mut t = Instant::now();
-            self.compact();
-            lap(&mut t, &mut stats.stage_ms.compact);
-        }
-        converged
-    }
-
-    /// The passes of [`Adapter::run`]; also returns how many dead faces collapses left for the
-    /// final compaction. Collapses only mark what they remove, so the flags stay indexed by slot
-    /// and need answers only for the edges the collapses restored; the face cap counts live
-    /// faces. Compaction runs early only when the holes outgrow a quarter of the faces (or the
-    /// slack `N_ALLOC`).
-    fn passes(
-        &mut self,
-        view: &View,
-        cap: Option<usize>,
-        refine_only: bool,
-        wishes: Option<Vec<bool>>,
-        stats: &mut AdaptStats,
-    ) -> (bool, usize) {
         let mut t = Instant::now();
         let mut wants = match wishes {
             Some(w) => w,
@@ -345,8 +328,9 @@ impl Adapter {
         };
         lap(&mut t, &mut stats.stage_ms.state);
         if refine_only && cap.is_some_and(|c| wishes_exceed(self.mesh.faces.len(), &wants, c)) {
-            return (false, 0);
+            return false;
         }
+        let mut converged = false;
         let mut dead_faces = 0;
         let mut look_for_collapses = true;
         // Where the last collapses may have made more collapsible (None: look everywhere). Only
@@ -358,7 +342,7 @@ impl Adapter {
             // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
             let over_cap = cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c);
             if refine_only && over_cap {
-                return (false, dead_faces);
+                break;
             }
             let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
@@ -399,14 +383,19 @@ impl Adapter {
             stats.splits += splits;
             stats.collapses += collapses;
             if splits == 0 && collapses == 0 {
-                return (!over_cap, dead_faces);
+                converged = !over_cap;
+                break;
             }
             if !over_cap && cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c) {
                 look_for_collapses = true;
                 apexes = None;
             }
         }
-        (false, dead_faces)
+        if dead_faces > 0 {
+            self.compact();
+            lap(&mut t, &mut stats.stage_ms.compact);
+        }
+        converged
     }
 }
 
