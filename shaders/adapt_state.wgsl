@@ -7,22 +7,21 @@
 
 struct Vertex {
     pos: array<f64, 3>,
-    normal: array<f32, 3>,
     ground: f32,
     water: f32,
     edge: u32,
-    parent_lod: array<f32, 2>,
+    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
+    parent_lod: u32,
     seed: u32,
-    // flags (u8), level (u8), padding (u16)
+    // `Tangent` (24 bits), flags (u8)
     bits: u32,
 }
 
 struct Edge {
     v: array<u32, 2>,
     f: array<u32, 2>,
-    length: f32,
-    lod_len: f32,
-    lod_radius: f32,
+    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
+    lod: u32,
     // level (u16), kind (u8), padding (u8)
     bits: u32,
 }
@@ -47,6 +46,15 @@ struct View {
 @group(0) @binding(3) var<storage, read_write> wants: array<u32>;
 
 const KIND_SEA: u32 = 0u;
+
+// A bfloat16 is the upper half of an f32.
+fn lod_len(lod: u32) -> f32 {
+    return bitcast<f32>(lod << 16u);
+}
+
+fn lod_radius(lod: u32) -> f32 {
+    return bitcast<f32>(lod & 0xffff0000u);
+}
 
 fn position(v: u32) -> vec3<f64> {
     let p = vertices[v].pos;
@@ -99,5 +107,5 @@ fn edge_wants(@builtin(global_invocation_id) id: vec3<u32>) {
     let edge = edges[e];
     let centre = (position(edge.v[0]) + position(edge.v[1])) * f64(0.5);
     let sea = ((edge.bits >> 16u) & 0xffu) == KIND_SEA;
-    wants[e] = select(0u, 1u, wants_split(f64(edge.lod_len), centre, f64(edge.lod_radius), sea));
+    wants[e] = select(0u, 1u, wants_split(f64(lod_len(edge.lod)), centre, f64(lod_radius(edge.lod)), sea));
 }

@@ -6,8 +6,8 @@
 //!
 //! The criterion is the paper's `l / d > c`, with `c` from a target projected edge length in
 //! pixels. To make the adapted mesh independent of the path that led to it, `l` and `d` are taken
-//! from per-edge bounds that only weaken from parent edge to child (see `Edge::lod_len` and
-//! `Edge::lod_radius`): `d` is the distance to a ball that contains every child's ball, eq. 6's
+//! from per-edge bounds that only weaken from parent edge to child (see `Edge::lod`): `d` is
+//! the distance to a ball that contains every child's ball, eq. 6's
 //! slow-down outside the frustum uses how far that ball lies outside the frustum planes, and
 //! back-face culling drops balls entirely behind the planet's horizon.
 

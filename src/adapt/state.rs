@@ -7,14 +7,14 @@
 //! `e1..e4` share one split level, and when no edge of those faces wants a split.
 
 use super::camera::View;
-use crate::mesh::{CollapseSite, EdgeKind, Mesh};
+use crate::mesh::{CollapseSite, EdgeKind, Mesh, VertexFlags};
 use rayon::prelude::*;
 
 /// Whether edge `e` wants to be split for `view`.
 #[inline]
 pub fn wants(mesh: &Mesh, view: &View, e: u32) -> bool {
     let edge = &mesh.edges[e as usize];
-    view.wants_split(edge.lod_len as f64, mesh.midpoint(e), edge.lod_radius as f64, edge.kind == EdgeKind::Sea)
+    view.wants_split(edge.lod.len() as f64, mesh.midpoint(e), edge.lod.radius() as f64, edge.kind == EdgeKind::Sea)
 }
 
 /// Whether each edge wants to be split for `view`.
@@ -66,7 +66,7 @@ pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
 /// Looks at the vertices `among`, or at all of them.
 pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: Option<&[u32]>) -> Vec<CollapseSite> {
     let check = |v: u32| {
-        if mesh.vertices[v as usize].level == 0 {
+        if !mesh.vertices[v as usize].flags.contains(VertexFlags::REFINED) {
             return None;
         }
         let site = mesh.collapse_site(v)?;
@@ -74,10 +74,10 @@ pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: O
         if !faces_quiet {
             return None;
         }
-        let [lod_len, lod_radius] = mesh.vertices[v as usize].parent_lod;
+        let lod = mesh.vertices[v as usize].parent_lod;
         let centre = (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5;
         let sea = mesh.edges[site.e[0] as usize].kind == EdgeKind::Sea;
-        (!view.wants_split(lod_len as f64, centre, lod_radius as f64, sea)).then_some(site)
+        (!view.wants_split(lod.len() as f64, centre, lod.radius() as f64, sea)).then_some(site)
     };
     match among {
         Some(vertices) => vertices.par_iter().filter_map(|&v| check(v)).collect(),

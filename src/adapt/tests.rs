@@ -64,21 +64,12 @@ fn refines_near_the_camera_and_stays_a_valid_mesh() {
     assert!(s.faces > base().mesh.faces.len() * 2, "{s:?}");
     // Edges near the view are much shorter than edges on the far side.
     let target = cam.target;
-    let near: Vec<f32> = m
-        .edges
-        .iter()
-        .enumerate()
-        .filter(|(e, _)| m.midpoint(*e as u32).distance(target) < 200_000.0)
-        .map(|(_, e)| e.length)
-        .collect();
-    let far: Vec<f32> = m
-        .edges
-        .iter()
-        .enumerate()
-        .filter(|(e, _)| m.midpoint(*e as u32).distance(-target) < 2_000_000.0)
-        .map(|(_, e)| e.length)
-        .collect();
-    let mean = |v: &[f32]| v.iter().map(|&x| x as f64).sum::<f64>() / v.len().max(1) as f64;
+    let edges = 0..m.edges.len() as u32;
+    let near: Vec<f64> =
+        edges.clone().filter(|&e| m.midpoint(e).distance(target) < 200_000.0).map(|e| m.edge_length(e)).collect();
+    let far: Vec<f64> =
+        edges.filter(|&e| m.midpoint(e).distance(-target) < 2_000_000.0).map(|e| m.edge_length(e)).collect();
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
     assert!(!near.is_empty() && !far.is_empty());
     assert!(mean(&near) * 20.0 < mean(&far), "near {} far {}", mean(&near), mean(&far));
 }
@@ -141,7 +132,7 @@ fn check_terrain(m: &Mesh, p: &Params) {
         }
         let dry =
             |v: &crate::mesh::Vertex| !v.flags.contains(VertexFlags::RIVER) && !v.submerged() && v.flags.is_inland();
-        if e.kind == EdgeKind::Continent && dry(a) && dry(b) && a.level + b.level > 0 {
+        if e.kind == EdgeKind::Continent && dry(a) && dry(b) && (a.flags | b.flags).contains(VertexFlags::REFINED) {
             let h = a.p().normalize().distance(b.p().normalize()) * m.radius;
             let slope = (a.ground - b.ground).abs() as f64 / h;
             checked += 1;
@@ -156,7 +147,7 @@ fn check_terrain(m: &Mesh, p: &Params) {
     assert!(checked > 10, "only {checked} slopes checked");
     assert!(steep * 1000 <= checked && worst < 2.0, "{steep} of {checked} edges exceed s_g, worst x{worst:.2}");
     for (v, vert) in m.vertices.iter().enumerate() {
-        if vert.level == 0 || !vert.flags.contains(VertexFlags::RIVER) {
+        if !vert.flags.contains(VertexFlags::REFINED) || !vert.flags.contains(VertexFlags::RIVER) {
             continue;
         }
         for (w, _) in adj.around(v as u32) {
@@ -268,7 +259,7 @@ fn centimetre_edges_at_earth_radius() {
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;
     let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| crate::mesh::altitude::split_vertex(m, site, &params);
-    let mut shortest = f32::MAX;
+    let mut shortest = f64::MAX;
     for _ in 0..400 {
         let f = (0..m.faces.len() as u32)
             .min_by(|&a, &b| {
@@ -277,11 +268,11 @@ fn centimetre_edges_at_earth_radius() {
             })
             .unwrap();
         let e = m.faces[f as usize].e[0];
-        if m.edges[e as usize].length < 0.012 {
+        if m.edge_length(e) < 0.012 {
             break;
         }
         m.refine_edge(e, &mut make);
-        shortest = m.edges.iter().map(|e| e.length).fold(f32::MAX, f32::min);
+        shortest = (0..m.edges.len() as u32).map(|e| m.edge_length(e)).fold(f64::MAX, f64::min);
     }
     m.validate().unwrap();
     assert!(shortest < 0.02, "stopped at {shortest} m");

@@ -90,7 +90,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         let bounds = map.bounds;
         shape::refine_where(&mut mesh, MAX_BASE_FACES as usize, |m, f| {
             let face = &m.faces[f as usize];
-            m.edges[face.e[0] as usize].length as f64 > target && face_touches(m, f, &bounds)
+            m.edge_length(face.e[0]) > target && face_touches(m, f, &bounds)
         });
     }
     progress("continents", 0.3);
@@ -139,7 +139,7 @@ fn face_touches(mesh: &Mesh, f: u32, bounds: &crate::maps::GeoBounds) -> bool {
         return true;
     }
     let face = &mesh.faces[f as usize];
-    let pad = (mesh.edges[face.e[0] as usize].length as f64 / mesh.radius).to_degrees();
+    let pad = (mesh.edge_length(face.e[0]) / mesh.radius).to_degrees();
     let ll: Vec<(f64, f64)> = face.v.iter().map(|&v| continents::lat_lon(mesh.pos(v))).collect();
     let (lat_lo, lat_hi) = ll.iter().fold((90.0f64, -90.0f64), |(lo, hi), &(la, _)| (lo.min(la), hi.max(la)));
     if lat_hi + pad < bounds.south || lat_lo - pad > bounds.north {

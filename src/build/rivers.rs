@@ -8,7 +8,7 @@
 use crate::maps::Map;
 use crate::mesh::altitude::riverbank_floor;
 use crate::mesh::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
-use crate::mesh::{split_kinds, EdgeKind, Mesh, SplitSite, Vertex, VertexFlags, NONE};
+use crate::mesh::{split_kinds, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags, NONE};
 use crate::params::Params;
 use crate::rng::{salt, unit, Sequence};
 use std::cmp::Ordering;
@@ -143,7 +143,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     }
 
     // --- Lengths along the network ---
-    let edge_len: Vec<f64> = mesh.edges.iter().map(|e| e.length as f64).collect();
+    let edge_len: Vec<f64> = (0..mesh.edges.len() as u32).map(|e| mesh.edge_length(e)).collect();
     let len = |e: u32| edge_len[e as usize];
     let mut l_down = vec![0.0f64; n];
     for &v in &order {
@@ -252,7 +252,7 @@ fn sea_floor(mesh: &mut Mesh, adj: &crate::mesh::Adjacency, p: &Params, elevatio
         }
         for (w, e) in adj.around(v) {
             if mesh.vertices[w as usize].flags.is_pure_sea() {
-                let nd = d + mesh.edges[e as usize].length as f64;
+                let nd = d + mesh.edge_length(e);
                 if nd < dist[w as usize] {
                     dist[w as usize] = nd;
                     heap.push(std::cmp::Reverse((nd.to_bits(), w)));
@@ -332,7 +332,7 @@ fn base_split_vertex(
         EdgeKind::Sea => {
             let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
             let mid = (va.ground + vb.ground) as f64 * 0.5;
-            let g = (mid + (xi - 0.5) * edge.length as f64 * SHELF_SLOPE * 0.5).min(sea - 1.0);
+            let g = (mid + (xi - 0.5) * m.edge_length(site.edge) * SHELF_SLOPE * 0.5).min(sea - 1.0);
             (pos, g, sea, 0.0, VertexFlags::empty())
         }
         EdgeKind::Coast => {
@@ -389,15 +389,14 @@ fn base_split_vertex(
     (v, kinds)
 }
 
-/// Lifts every vertex to its ground altitude (eq. 1), then refreshes lengths, normals and the
-/// downstream tangents of river vertices.
+/// Lifts every vertex to its ground altitude (eq. 1), then refreshes the level-of-detail bounds
+/// and the downstream tangents of river vertices.
 pub fn finish(mesh: &mut Mesh) {
     let r = mesh.radius;
     for v in mesh.vertices.iter_mut() {
         v.pos = lift(v.p(), r, v.ground as f64).to_array();
     }
     mesh.update_lengths();
-    mesh.update_normals();
     let graph = super::network::RiverGraph::from_mesh(mesh);
     for v in 0..mesh.vertices.len() {
         let d = graph.downstream[v];
@@ -409,6 +408,6 @@ pub fn finish(mesh: &mut Mesh) {
         } else {
             continue;
         };
-        mesh.vertices[v].normal = t.as_vec3().to_array();
+        mesh.vertices[v].tangent = Tangent::new(t);
     }
 }

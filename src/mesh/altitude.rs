@@ -6,7 +6,7 @@
 //! so the same edge always yields the same vertex.
 
 use super::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
-use super::{split_kinds, EdgeKind, Mesh, SplitSite, Vertex, VertexFlags};
+use super::{split_kinds, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags};
 use crate::params::Params;
 use crate::rng::{salt, unit};
 use glam::DVec3;
@@ -65,7 +65,7 @@ pub fn wet_vertex(
     let mid_ground = (va.ground as f64 + vb.ground as f64) * 0.5;
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
-            let g = (mid_ground + (xi - 0.5) * edge.length as f64 * SEA_ROUGHNESS).min(sea - 1.0);
+            let g = (mid_ground + (xi - 0.5) * va.p().distance(vb.p()) * SEA_ROUGHNESS).min(sea - 1.0);
             (g, sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {
@@ -82,12 +82,10 @@ pub fn wet_vertex(
     let mut v = Vertex::new(lift(pos, m.radius, ground), seed);
     v.ground = ground as f32;
     v.water = water as f32;
-    v.flags = flags;
-    v.level = 1;
+    v.flags = flags | VertexFlags::REFINED;
     if edge.kind == EdgeKind::River {
         let (up, down) = if va.water >= vb.water { (va, vb) } else { (vb, va) };
-        let t = tangent_towards(up.p(), down.p());
-        v.normal = t.as_vec3().to_array();
+        v.tangent = Tangent::new(tangent_towards(up.p(), down.p()));
     }
     (v, kinds)
 }
@@ -123,7 +121,7 @@ fn continent_vertex(
             hi = hi.min(v.ground as f64 + le * p.ground_slope());
         }
     }
-    let edge_len = m.edges[site.edge as usize].length as f64;
+    let edge_len = m.edge_length(site.edge);
 
     // Eq. 10: a new river arm, when the new edge to a river vertex is long enough and an
     // altitude exists above that river (by s_r) yet below every dry neighbour's bank.
@@ -149,9 +147,8 @@ fn continent_vertex(
             let mut v = Vertex::new(lift(pos, r, g), seed);
             v.ground = g as f32;
             v.water = g as f32;
-            v.flags = VertexFlags::RIVER;
-            v.level = 1;
-            v.normal = tangent_towards(v.p(), around[i].p()).as_vec3().to_array();
+            v.flags = VertexFlags::RIVER | VertexFlags::REFINED;
+            v.tangent = Tangent::new(tangent_towards(v.p(), around[i].p()));
             return (v, kinds);
         }
     }
@@ -177,6 +174,6 @@ fn continent_vertex(
     let mut v = Vertex::new(lift(pos, r, g), seed);
     v.ground = g as f32;
     v.water = water as f32;
-    v.level = 1;
+    v.flags = VertexFlags::REFINED;
     (v, kinds)
 }

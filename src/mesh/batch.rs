@@ -9,8 +9,8 @@
 //! the slot atomically); every other access touches owned entities or reads positions, which no
 //! operation of a batch changes.
 
-use super::split::{round_down, DEAD};
-use super::{CollapseSite, Edge, EdgeKind, Face, SplitSite, Vertex, VertexFlags, LOD_RADIUS};
+use super::split::DEAD;
+use super::{CollapseSite, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags, LOD_RADIUS};
 use glam::DVec3;
 use std::ptr::{addr_of, addr_of_mut};
 use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
@@ -83,25 +83,18 @@ impl Buffers {
         self.f.add(f3 as usize).write(face([m, b, t], [old1.e[1], e2, e3], old1.kind));
         self.f.add(f4 as usize).write(face([m, d, b], [old2.e[2], e3, e4], old2.kind));
         let edge = |v: [u32; 2], f: [u32; 2], kind, p: DVec3, q: DVec3| {
-            let length = p.distance(q) as f32;
+            let length = p.distance(q);
             let offset = ((p + q) * 0.5).distance(parent_mid);
-            Edge {
-                v,
-                f,
-                length,
-                lod_len: length.min(parent.lod_len),
-                lod_radius: (LOD_RADIUS * length).min(round_down(parent.lod_radius as f64 - offset)),
-                level,
-                kind,
-                _pad: 0,
-            }
+            let (len, radius) = (parent.lod.len() as f64, parent.lod.radius() as f64);
+            let lod = Lod::new(length.min(len), (LOD_RADIUS as f64 * length).min(radius - offset));
+            Edge { v, f, lod, level, kind, _pad: 0 }
         };
         self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], pa, pm));
         self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], pm, self.pos(t)));
         self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], pm, pb));
         self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], pm, self.pos(d)));
         vertex.edge = e1;
-        vertex.parent_lod = [parent.lod_len, parent.lod_radius];
+        vertex.parent_lod = parent.lod;
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
         self.v.add(m as usize).write(vertex);
         self.relink(old1.e[1], f1, f3);
@@ -128,17 +121,9 @@ impl Buffers {
         let edge1 = self.e.add(e1 as usize);
         let (k1, k3) = ((*edge1).kind, (*self.e.add(e3 as usize)).kind);
         let kind = if k1 == k3 || k3 == EdgeKind::River { k1 } else { k3 };
-        let [lod_len, lod_radius] = addr_of!((*self.v.add(m as usize)).parent_lod).read();
+        let lod = addr_of!((*self.v.add(m as usize)).parent_lod).read();
         let old = edge1.read();
-        edge1.write(Edge {
-            v: [a, b],
-            length: self.pos(a).distance(self.pos(b)) as f32,
-            lod_len,
-            lod_radius,
-            level: old.level - 1,
-            kind,
-            ..old
-        });
+        edge1.write(Edge { v: [a, b], lod, level: old.level - 1, kind, ..old });
         for (v, gone, keep) in [(b, e3, e1), (t, e2, ta), (d, e4, ad)] {
             self.move_link(v, gone, keep);
         }

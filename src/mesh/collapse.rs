@@ -6,7 +6,7 @@
 
 use super::batch::Buffers;
 use super::split::DEAD;
-use super::Mesh;
+use super::{Mesh, VertexFlags};
 
 /// Entities of a collapsible vertex: `[e1, e2, e3, e4]`, `[f1, f2, f3, f4]`, and `(a, b, t, d)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,7 +24,7 @@ impl Mesh {
     /// The collapse site of vertex `m`, or `None` when `m` cannot be collapsed now.
     pub fn collapse_site(&self, m: u32) -> Option<CollapseSite> {
         let vert = &self.vertices[m as usize];
-        if vert.level == 0 || vert.edge >= DEAD {
+        if !vert.flags.contains(VertexFlags::REFINED) || vert.edge >= DEAD {
             return None;
         }
         let e1 = vert.edge;

@@ -32,7 +32,8 @@ impl EdgeKind {
     }
 }
 
-/// A vertex has all the types of its incident edges (§3.2), as bits.
+/// A vertex has all the types of its incident edges (§3.2), as bits, and a mark for vertices
+/// made by adaption.
 #[repr(transparent)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit)]
 pub struct VertexFlags(pub u8);
@@ -46,6 +47,8 @@ impl VertexFlags {
     pub const MOUTH: VertexFlags = VertexFlags(16);
     /// A land vertex placed to separate rivers (eq. 5); never becomes a river.
     pub const MOUNTAIN: VertexFlags = VertexFlags(32);
+    /// Made by a split, so a collapse may remove it; base-mesh vertices never collapse.
+    pub const REFINED: VertexFlags = VertexFlags(64);
 
     pub const fn empty() -> VertexFlags {
         VertexFlags(0)

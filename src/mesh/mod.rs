@@ -16,12 +16,14 @@ mod batch;
 mod collapse;
 mod kinds;
 mod order;
+mod packed;
 mod split;
 pub mod terrain;
 pub mod validate;
 
 pub use collapse::CollapseSite;
 pub use kinds::{EdgeKind, FaceKind, VertexFlags};
+pub use packed::{Lod, Tangent};
 pub use split::{split_kinds, Split, SplitSite};
 
 use glam::DVec3;
@@ -29,14 +31,12 @@ use glam::DVec3;
 /// Marks an absent index.
 pub const NONE: u32 = u32::MAX;
 
-/// One vertex (Table 3, "active vertices").
+/// One vertex (Table 3, "active vertices"): 48 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
 pub struct Vertex {
     /// Position, planet-centred metres.
     pub pos: [f64; 3],
-    /// Unit normal; for river vertices the unit tangent pointing downstream (§4.2).
-    pub normal: [f32; 3],
     /// Ground altitude above the base sphere, metres.
     pub ground: f32,
     /// Water altitude above the base sphere, metres (equals `ground` where dry).
@@ -44,19 +44,18 @@ pub struct Vertex {
     /// An incident edge. For a vertex made by a split this is the half `e1` of the split edge,
     /// which tells a collapse which two edges to merge.
     pub edge: u32,
-    /// Level-of-detail bounds `[length, radius]` of the edge whose split made this vertex,
-    /// restored to that edge when the vertex collapses (see [`Edge::lod_len`]).
-    pub parent_lod: [f32; 2],
+    /// Level-of-detail bounds of the edge whose split made this vertex, restored to that edge
+    /// when the vertex collapses (see [`Edge::lod`]).
+    pub parent_lod: Lod,
     /// Per-vertex random seed; a split vertex gets `s_ev1 + s_ev2` (§3.1).
     pub seed: u32,
-    /// Types of the incident edges when the vertex was made (§3.2).
+    /// River vertices: the unit tangent pointing downstream (§4.2).
+    pub tangent: Tangent,
+    /// Types of the incident edges when the vertex was made (§3.2), and whether a split made it.
     pub flags: VertexFlags,
-    /// 0 for base-mesh vertices (never collapsed), 1 for vertices made by adaption.
-    pub level: u8,
-    pub _pad: [u8; 2],
 }
 
-/// One edge (Table 3, "active edges").
+/// One edge (Table 3, "active edges"): 24 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
 pub struct Edge {
@@ -64,17 +63,13 @@ pub struct Edge {
     pub v: [u32; 2],
     /// The two faces: left of `v[0] -> v[1]`, then right.
     pub f: [u32; 2],
-    /// Length, metres.
-    pub length: f32,
-    /// Length used by the refinement criterion `l/d > c`: the edge's length, but never more
-    /// than that of the edge whose split made it, so the criterion can only weaken from
-    /// parent to child.
-    pub lod_len: f32,
-    /// Radius of a ball around the edge's midpoint that lies inside the parent edge's ball
-    /// (it may be negative). Distances are measured to this ball, so a child is never nearer
-    /// than its parent; with `lod_len` this makes "wants to split" hereditary, and the adapted
-    /// mesh for a camera the same whatever was adapted before.
-    pub lod_radius: f32,
+    /// Bounds used by the refinement criterion `l/d > c`. The length is the edge's own, but
+    /// never more than that of the edge whose split made it, so the criterion can only weaken
+    /// from parent to child. The radius is that of a ball around the edge's midpoint that lies
+    /// inside the parent edge's ball (it may be negative): distances are measured to this ball,
+    /// so a child is never nearer than its parent. Together they make "wants to split"
+    /// hereditary, and the adapted mesh for a camera the same whatever was adapted before.
+    pub lod: Lod,
     /// Split level: incremented by each split, decremented by each collapse.
     pub level: u16,
     pub kind: EdgeKind,
@@ -106,17 +101,16 @@ impl Vertex {
     pub fn new(pos: DVec3, seed: u32) -> Vertex {
         Vertex {
             pos: pos.to_array(),
-            normal: [0.0; 3],
             ground: 0.0,
             water: 0.0,
             edge: NONE,
-            parent_lod: [0.0; 2],
+            parent_lod: Lod::default(),
             seed,
+            tangent: Tangent::ZERO,
             flags: VertexFlags::empty(),
-            level: 0,
-            _pad: [0; 2],
         }
     }
+
     #[inline]
     pub fn p(&self) -> DVec3 {
         DVec3::from_array(self.pos)
@@ -156,6 +150,9 @@ pub const VERTEX_BYTES: usize = std::mem::size_of::<Vertex>();
 pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
+// The WGSL twins of these structs (`shaders/adapt_*.wgsl`) spell the same layouts out.
+const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24);
+
 impl Mesh {
     pub fn pos(&self, v: u32) -> DVec3 {
         self.vertices[v as usize].p()
@@ -186,9 +183,7 @@ impl Mesh {
                     mesh.edges.push(Edge {
                         v: [a, b],
                         f: [fi as u32, NONE],
-                        length: 0.0,
-                        lod_len: 0.0,
-                        lod_radius: 0.0,
+                        lod: Lod::default(),
                         level: 0,
                         kind: EdgeKind::Sea,
                         _pad: 0,
@@ -205,15 +200,20 @@ impl Mesh {
         mesh
     }
 
-    /// Recomputes every edge length and makes every edge a root of the level-of-detail
-    /// hierarchy (`lod_len` = length, `lod_radius` = [`LOD_RADIUS`] x length).
+    /// Makes every edge a root of the level-of-detail hierarchy: its bounds are its length
+    /// and [`LOD_RADIUS`] times that.
     pub fn update_lengths(&mut self) {
         let verts = &self.vertices;
         for e in self.edges.iter_mut() {
-            e.length = verts[e.v[0] as usize].p().distance(verts[e.v[1] as usize].p()) as f32;
-            e.lod_len = e.length;
-            e.lod_radius = LOD_RADIUS * e.length;
+            let length = verts[e.v[0] as usize].p().distance(verts[e.v[1] as usize].p());
+            e.lod = Lod::new(length, LOD_RADIUS as f64 * length);
         }
+    }
+
+    /// Length of edge `e`, metres.
+    pub fn edge_length(&self, e: u32) -> f64 {
+        let edge = &self.edges[e as usize];
+        self.pos(edge.v[0]).distance(self.pos(edge.v[1]))
     }
 
     /// Midpoint of edge `e`.
@@ -258,23 +258,6 @@ impl Mesh {
     pub fn triangle_area_vector(&self, v: [u32; 3]) -> DVec3 {
         let [a, b, c] = v.map(|v| self.pos(v));
         (b - a).cross(c - a) * 0.5
-    }
-
-    /// Recomputes vertex normals from the surrounding faces (area weighted); river vertices keep
-    /// their stored tangent.
-    pub fn update_normals(&mut self) {
-        let mut acc = vec![DVec3::ZERO; self.vertices.len()];
-        for f in 0..self.faces.len() as u32 {
-            let n = self.face_area_vector(f);
-            for &v in &self.faces[f as usize].v {
-                acc[v as usize] += n;
-            }
-        }
-        for (v, n) in self.vertices.iter_mut().zip(acc) {
-            if !v.flags.contains(VertexFlags::RIVER) {
-                v.normal = n.normalize_or_zero().as_vec3().to_array();
-            }
-        }
     }
 }
 

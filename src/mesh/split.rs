@@ -138,15 +138,5 @@ impl Mesh {
     }
 }
 
-/// `x` as the largest `f32` not above it, so nested balls stay nested after rounding.
-pub(super) fn round_down(x: f64) -> f32 {
-    let v = x as f32;
-    if v as f64 > x {
-        v.next_down()
-    } else {
-        v
-    }
-}
-
 /// Marks an entity removed by a collapse until the buffers are compacted.
 pub(super) const DEAD: u32 = NONE - 1;

@@ -42,8 +42,7 @@ pub fn river_position(mesh: &Mesh, site: &SplitSite, seed: u32, min_river_length
         // Eq. 9 assumes the river flows from ev1 to ev2; orient by water altitude.
         let (wa, wb) = (mesh.vertices[site.a as usize].water, mesh.vertices[site.b as usize].water);
         let (up, down) = if wa >= wb { (site.a, site.b) } else { (site.b, site.a) };
-        let tu = DVec3::from_array(mesh.vertices[up as usize].normal.map(f64::from));
-        let td = DVec3::from_array(mesh.vertices[down as usize].normal.map(f64::from));
+        let (tu, td) = (mesh.vertices[up as usize].tangent.get(), mesh.vertices[down as usize].tangent.get());
         let vs = (a + b) * 0.5 + length * (tu - td) * 0.25;
         let td_line = t - d;
         let denom = td_line.length_squared();

@@ -10,7 +10,7 @@ fn sphere(faces: usize) -> Mesh {
 
 fn midpoint_vertex(m: &Mesh, site: &SplitSite) -> Vertex {
     let p = (m.pos(site.a) + m.pos(site.b)).normalize() * m.radius;
-    Vertex { level: 1, ..Vertex::new(p, 7) }
+    Vertex { flags: VertexFlags::REFINED, ..Vertex::new(p, 7) }
 }
 
 #[test]

@@ -10,7 +10,7 @@
 //! The same node therefore always gets the same vertices, bit for bit, as in a view.
 
 use crate::mesh::altitude::split_vertex;
-use crate::mesh::{Mesh, SplitSite};
+use crate::mesh::{Mesh, SplitSite, VertexFlags};
 use crate::params::Params;
 use std::collections::HashMap;
 
@@ -48,7 +48,7 @@ impl BaseTree {
     pub fn new(base: &Mesh) -> Result<BaseTree, NotBisected> {
         let mut mesh = base.clone();
         for v in mesh.vertices.iter_mut().skip(6) {
-            v.level = 1; // let every vertex but the octahedron's collapse
+            v.flags.insert(VertexFlags::REFINED); // let every vertex but the octahedron's collapse
         }
         let mut midpoints = HashMap::with_capacity(mesh.vertices.len());
         let mut alive: Vec<u32> = (6..mesh.vertices.len() as u32).collect();
