@@ -396,7 +396,7 @@ pub fn finish(mesh: &mut Mesh) {
     for v in mesh.vertices.iter_mut() {
         v.pos = lift(v.p(), r, v.ground as f64).to_array();
     }
-    mesh.update_lengths();
+    mesh.reset_lod_roots();
     let graph = super::network::RiverGraph::from_mesh(mesh);
     for v in 0..mesh.vertices.len() {
         let d = graph.downstream[v];

@@ -24,8 +24,8 @@ use glam::DVec3;
 
 /// Unit surface normal of every vertex: the area-weighted sum of its faces' normals.
 ///
-/// The mesh's stored `normal` holds a downstream tangent for river vertices, so exports always
-/// recompute normals from the faces.
+/// The mesh stores no normals (river vertices keep only their downstream tangent), so exports
+/// compute them from the faces.
 pub fn surface_normals(mesh: &Mesh) -> Vec<DVec3> {
     use rayon::prelude::*;
     // Face vectors in parallel, then summed per vertex in face order (the same bits as a serial

@@ -65,7 +65,7 @@ pub fn wet_vertex(
     let mid_ground = (va.ground as f64 + vb.ground as f64) * 0.5;
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
-            let g = (mid_ground + (xi - 0.5) * va.p().distance(vb.p()) * SEA_ROUGHNESS).min(sea - 1.0);
+            let g = (mid_ground + (xi - 0.5) * m.edge_length(site.edge) * SEA_ROUGHNESS).min(sea - 1.0);
             (g, sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {

@@ -196,13 +196,13 @@ impl Mesh {
             }
             mesh.faces.push(face);
         }
-        mesh.update_lengths();
+        mesh.reset_lod_roots();
         mesh
     }
 
     /// Makes every edge a root of the level-of-detail hierarchy: its bounds are its length
     /// and [`LOD_RADIUS`] times that.
-    pub fn update_lengths(&mut self) {
+    pub fn reset_lod_roots(&mut self) {
         let verts = &self.vertices;
         for e in self.edges.iter_mut() {
             let length = verts[e.v[0] as usize].p().distance(verts[e.v[1] as usize].p());
