@@ -143,9 +143,10 @@ fn check_terrain(m: &Mesh, p: &Params) {
         }
     }
     // Eq. 12 can only be met where the four neighbours of a split allow it; where they are
-    // steeper than s_g across the diamond the least steep altitude is taken.
+    // steeper than s_g across the diamond the least steep altitude is taken. With well-shaped
+    // diamonds that is rare (2 edges in 6.3 million over eight planets, 6 % over s_g).
     assert!(checked > 10, "only {checked} slopes checked");
-    assert!(steep * 1000 <= checked && worst < 2.0, "{steep} of {checked} edges exceed s_g, worst x{worst:.2}");
+    assert!(steep * 10_000 <= checked && worst < 1.5, "{steep} of {checked} edges exceed s_g, worst x{worst:.2}");
     for (v, vert) in m.vertices.iter().enumerate() {
         if !vert.flags.contains(VertexFlags::REFINED) || !vert.flags.contains(VertexFlags::RIVER) {
             continue;
@@ -153,18 +154,45 @@ fn check_terrain(m: &Mesh, p: &Params) {
         for (w, _) in adj.around(v as u32) {
             let n = &m.vertices[w as usize];
             if n.flags.is_inland() && !n.flags.contains(VertexFlags::RIVER) && !n.submerged() {
-                assert!(n.ground > vert.water, "bank {w} ({}) below river {v} water ({})", n.ground, vert.water);
+                assert!(n.ground >= vert.water, "bank {w} ({}) below river {v} water ({})", n.ground, vert.water);
             }
         }
     }
 }
 
+/// A camera `height` metres above base vertex `v` (above its ground), looking at a point
+/// `ahead` metres to the north along the ground.
+fn camera_over(m: &Mesh, v: u32, height: f64, ahead: f64) -> Camera {
+    let vert = &m.vertices[v as usize];
+    let dir = vert.p().normalize();
+    let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
+    let ground = R + vert.ground as f64;
+    let target = (dir + north * (ahead / R)).normalize() * ground;
+    Camera::new(dir * (ground + height), target, None, 60.0, 320, 180, 3.0, 15.0, R).unwrap()
+}
+
 #[test]
-fn terrain_invariants_hold_after_adaption() {
-    for cam in [camera(10.0, 20.0, 100_000.0, 300_000.0, 3.0), camera(-30.0, 140.0, 5_000.0, 20_000.0, 3.0)] {
-        let (m, s) = adapted(&[cam]);
-        assert!(s.converged);
-        check_terrain(&m, &Params::default());
+fn terrain_invariants_hold_over_rivers_of_many_planets() {
+    for seed in 1..=8 {
+        let spec = PlanetSpec { seed, params: Params { base_faces: 2000, ..Params::default() }, map: None };
+        let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
+        let m = &planet.mesh;
+        // The river vertex of median altitude: a view over a river's middle course.
+        let mut rivers: Vec<u32> = (0..m.vertices.len() as u32)
+            .filter(|&v| m.vertices[v as usize].flags.contains(VertexFlags::RIVER))
+            .collect();
+        rivers
+            .sort_by(|&x, &y| m.vertices[x as usize].ground.total_cmp(&m.vertices[y as usize].ground).then(x.cmp(&y)));
+        let v = rivers[rivers.len() / 2];
+        for (height, ahead) in [(150_000.0, 300_000.0), (5_000.0, 20_000.0)] {
+            // Capped: terrain that refines without end (a wall that splits never shorten) fails
+            // here instead of exhausting memory.
+            let mut a = Adapter::new(m.clone(), Params::default());
+            let view = a.view(&camera_over(m, v, height, ahead), 0);
+            let converged = a.run(&view, Some(1_000_000), true, None, &mut AdaptStats::default());
+            assert!(converged, "seed {seed}, {height} m: {} faces and still refining", a.mesh().faces.len());
+            check_terrain(a.mesh(), &Params::default());
+        }
     }
 }
 
@@ -231,8 +259,8 @@ mod paths {
     use proptest::prelude::*;
 
     fn cam_strategy() -> impl Strategy<Value = Camera> {
-        // From 10 km up to 2,000 km: a lower eye can sit inside a mountain and refine without end.
-        (-60.0f64..60.0, -180.0f64..180.0, 4.0f64..6.3, 1.0f64..4.0)
+        // From 1 km above the base sphere (an eye that may sit inside a mountain) up to 2,000 km.
+        (-60.0f64..60.0, -180.0f64..180.0, 3.0f64..6.3, 1.0f64..4.0)
             .prop_map(|(lat, lon, log_h, ahead)| camera(lat, lon, 10f64.powf(log_h), 10f64.powf(log_h) * ahead, 6.0))
     }
 

@@ -2,7 +2,7 @@
 //! eq. 2 and lifted with eq. 1, to the requested face count, and further inside a map's bounds
 //! until edges are as short as the map's detail needs.
 
-use crate::mesh::terrain::{lift, split_seed, valid_or_centre, weighted_position};
+use crate::mesh::terrain::{lift, split_seed, weighted_position, well_shaped};
 use crate::mesh::{split_kinds, EdgeKind, Mesh, Vertex};
 use crate::rng::{mix32, Sequence};
 use glam::DVec3;
@@ -41,7 +41,7 @@ fn shape_split(mesh: &mut Mesh, e: u32) {
         let p = if a.angle_between(b) > RANDOM_BELOW_RAD {
             (a + b) * 0.5
         } else {
-            valid_or_centre(m, site, weighted_position(m, site, seed))
+            well_shaped(m, site, weighted_position(m, site, seed))
         };
         let p = lift(p, m.radius, 0.0);
         (Vertex::new(p, seed), split_kinds(EdgeKind::Sea, crate::mesh::FaceKind::Sea, crate::mesh::FaceKind::Sea))

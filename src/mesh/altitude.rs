@@ -31,6 +31,29 @@ pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
         .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope())
 }
 
+/// The altitude that minimises the steepest slope towards neighbours at `(ground, horizontal
+/// distance, dry)`: every neighbour bounds it from above (`ground + k distance`), dry ones also
+/// from below (`ground - k distance`). The bounds meet for the smallest `k` at which the tightest
+/// lower and upper pair touch (half-lines that meet pairwise meet all together), and that point
+/// is the answer.
+fn least_steep(neighbours: impl Iterator<Item = (f64, f64, bool)> + Clone) -> f64 {
+    let mut best = (f64::MIN, 0.0);
+    for (gi, li, dry) in neighbours.clone() {
+        if !dry {
+            continue;
+        }
+        for (gj, lj, _) in neighbours.clone() {
+            if gi > gj {
+                let k = (gi - gj) / (li + lj).max(f64::MIN_POSITIVE);
+                if k > best.0 {
+                    best = (k, gi - k * li);
+                }
+            }
+        }
+    }
+    best.1
+}
+
 /// Horizontal distance between two planet points (on the base sphere).
 fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
     p.normalize().distance(q.normalize()) * radius
@@ -69,9 +92,11 @@ pub fn wet_vertex(
             (g, sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {
-            // A shore point: within a riverbank's height of sea level.
-            let g = (mid_ground + (xi - 0.5) * p.riverbed_edge_height_m)
-                .clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
+            // A shore point: within a riverbank's height of sea level, its offset shrinking with
+            // the edge so that refining a shore flattens it instead of keeping metre-high steps
+            // over ever shorter distances.
+            let rough = p.riverbed_edge_height_m.min(land_roughness(m.edge_length(site.edge)));
+            let g = (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
             (g, sea, VertexFlags::empty())
         }
         _ => {
@@ -109,7 +134,10 @@ fn continent_vertex(
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
-    // sea level.
+    // sea level. Beyond the paper, the ground may not rise faster than s_g from a wet
+    // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
+    // could stand any height above its river, and splitting such a wall copies its height to
+    // the new vertex on the dry side, so the wall never shortens and refines without end.
     let mut bank_lo = p.sea_level_m + 1.0;
     let mut slope_lo = f64::MIN;
     let mut hi = f64::MAX;
@@ -118,8 +146,8 @@ fn continent_vertex(
             bank_lo = bank_lo.max(riverbank_floor(v, le, p));
         } else {
             slope_lo = slope_lo.max(v.ground as f64 - le * p.ground_slope());
-            hi = hi.min(v.ground as f64 + le * p.ground_slope());
         }
+        hi = hi.min(v.ground as f64 + le * p.ground_slope());
     }
     let edge_len = m.edge_length(site.edge);
 
@@ -164,13 +192,16 @@ fn continent_vertex(
         hi
     } else {
         // The neighbours are steeper than s_g across the diamond: no altitude satisfies eq. 12,
-        // so take the one that exceeds it least.
-        (slope_lo + hi) * 0.5
+        // so take the one whose steepest edge is least steep.
+        let slopes = around.iter().zip(lens).map(|(v, le)| (v.ground as f64, le, !is_wet(v)));
+        least_steep(slopes)
     };
-    // Water: the mean water level of the wet neighbours (the paper averages all four; dry
-    // neighbours would turn every dip into a pond). Below it, the vertex is submerged bank.
-    let wet: Vec<f64> = around.iter().filter(|v| is_wet(v)).map(|v| v.water as f64).collect();
-    let water = if wet.is_empty() { g } else { (wet.iter().sum::<f64>() / wet.len() as f64).max(g) };
+    // Water: a vertex below a wet neighbour's water surface lies in that river's channel (eq.
+    // 11 lets a bank near a deep river sit below the surface) or lake and is covered up to the
+    // highest such surface; otherwise it is dry. (The paper averages the four neighbours' water
+    // levels, which leaves a vertex below one river's surface dry when the others are lower.)
+    let surface = around.iter().filter(|v| is_wet(v)).map(|v| v.water).fold(f32::MIN, f32::max);
+    let water = if (g as f32) < surface { surface as f64 } else { g };
     let mut v = Vertex::new(lift(pos, r, g), seed);
     v.ground = g as f32;
     v.water = water as f32;

@@ -62,26 +62,43 @@ pub fn split_position(mesh: &Mesh, site: &SplitSite, seed: u32, kind: EdgeKind, 
         EdgeKind::River => river_position(mesh, site, seed, min_river_length),
         EdgeKind::Coast | EdgeKind::Continent => weighted_position(mesh, site, seed),
     };
-    valid_or_centre(mesh, site, p)
+    well_shaped(mesh, site, p)
 }
 
-/// Keeps `p` if the four faces the split makes stay counter-clockwise on the sphere, else the
-/// edge centre, which always does. Eq. 2 and eq. 7 place the vertex inside the diamond
-/// `a, t, b, d`; where that diamond is not convex (large or skewed faces) the point could fold
-/// a face over, and this guard — a function of the same four vertices, so still reproducible —
-/// prevents it.
-pub fn valid_or_centre(mesh: &Mesh, site: &SplitSite, p: DVec3) -> DVec3 {
+/// Smallest shape quality ([`face_quality`]) a randomised split position may give the four new
+/// faces. Eq. 2 moves each new vertex up to a quarter of the diamond away from its centre, and
+/// with newest-vertex bisection those offsets compound from level to level: left alone, the
+/// median face quality falls from ~0.75 to ~0.04 over 17 levels (slivers a thousand times longer
+/// than wide), and sliver diamonds make the slope bounds of eq. 12 unsatisfiable. Holding each
+/// split's faces at this quality keeps the distribution level (1 % of faces below ~0.25, none
+/// below ~0.15, at every level we measured) while most splits keep a random offset.
+pub const MIN_SPLIT_QUALITY: f64 = 0.4;
+
+/// The randomised position `p` (eq. 2 or eq. 7), or, when that would make one of the four new
+/// faces worse than [`MIN_SPLIT_QUALITY`], `p` pulled halfway and then three quarters of the
+/// way back to the split edge's centre; the centre itself when neither is good enough (it
+/// never folds a face: it halves both old faces). A function of the same four vertices and
+/// seed, so still reproducible.
+pub fn well_shaped(mesh: &Mesh, site: &SplitSite, p: DVec3) -> DVec3 {
     let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v).normalize());
-    let m = p.normalize();
-    let ccw = |x: DVec3, y: DVec3, z: DVec3| {
-        let det = x.cross(y).dot(z);
-        det > 1e-4 * (x - y).length() * (y - z).length() * (z - x).length()
-    };
-    if ccw(m, t, a) && ccw(m, b, t) && ccw(m, a, d) && ccw(m, d, b) {
-        p
-    } else {
-        edge_centre(mesh, site)
+    let c = edge_centre(mesh, site);
+    for scale in [1.0, 0.5, 0.25] {
+        let x = c + (p - c) * scale;
+        let m = x.normalize();
+        let q = face_quality(m, t, a).min(face_quality(m, b, t)).min(face_quality(m, a, d)).min(face_quality(m, d, b));
+        if q >= MIN_SPLIT_QUALITY {
+            return x;
+        }
     }
+    c
+}
+
+/// Shape quality of the triangle `x, y, z` (unit vectors, counter-clockwise seen from outside):
+/// `4 sqrt(3) area / (sum of squared sides)`, 1 for an equilateral triangle, 0 for a degenerate
+/// one, negative when the triangle is folded over (clockwise).
+pub fn face_quality(x: DVec3, y: DVec3, z: DVec3) -> f64 {
+    let twice_area = x.cross(y).dot(z);
+    2.0 * 3f64.sqrt() * twice_area / (x.distance_squared(y) + y.distance_squared(z) + z.distance_squared(x))
 }
 
 /// Eq. 1: lifts a point onto the sphere of radius `radius + altitude` (centre at the origin).

@@ -94,11 +94,18 @@ fn orbit_view_shows_sea_land_and_ice_where_the_map_has_them() {
 fn ground_view_shows_a_river_where_the_mesh_has_one() {
     let (planet, params) = earth();
     let mesh = &planet.mesh;
-    // A river vertex with dry land all around it (not the mouth), on a long river.
+    // A river vertex with dry land all around it (not the mouth), on a long river, low in
+    // the hills (snow is nearly as blue as water).
     let mut reaches = planet.rivers.reaches(mesh);
     reaches.sort_by(|a, b| b.upstream_area_m2.total_cmp(&a.upstream_area_m2));
-    let reach = reaches.iter().find(|r| r.vertices.len() > 12).expect("a long river");
-    let river = reach.vertices[reach.vertices.len() / 2];
+    let middle = |r: &&crate::build::network::Reach| r.vertices[r.vertices.len() / 2];
+    let reach = reaches
+        .iter()
+        .find(|r| {
+            r.vertices.len() > 6 && (mesh.vertices[middle(r) as usize].ground as f64) < params.sea_level_m + 2000.0
+        })
+        .expect("a long river");
+    let river = middle(&reach);
     assert!(mesh.vertices[river as usize].flags.contains(VertexFlags::RIVER));
     let v = &mesh.vertices[river as usize];
     let up = v.p().normalize();

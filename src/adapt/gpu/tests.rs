@@ -84,16 +84,33 @@ fn a_fly_through_adapts_to_the_same_meshes_on_both_backends() {
 
 #[test]
 fn metre_edges_by_the_eye_are_decided_alike_at_earth_radius() {
-    // Two metres above the base sphere (where the positions lie; altitudes are separate),
-    // half-pixel targets: edges in front of the eye come down to about a metre, where an f32 position
-    // at Earth radius would be off by up to a quarter of a metre.
+    // Two metres above the lowest land vertex (not inside a mountain), half-pixel targets:
+    // edges in front of the eye come down to about a metre, where an f32 position at Earth
+    // radius would be off by up to a quarter of a metre.
     let base = &planet().mesh;
-    let land = (0..base.edges.len() as u32).find(|&e| base.edges[e as usize].kind == crate::mesh::EdgeKind::Continent);
-    let dir = base.midpoint(land.expect("the planet has land")).normalize();
+    let land = base
+        .edges
+        .iter()
+        .filter(|e| e.kind == crate::mesh::EdgeKind::Continent)
+        .flat_map(|e| e.v)
+        .min_by(|&x, &y| base.vertices[x as usize].ground.total_cmp(&base.vertices[y as usize].ground).then(x.cmp(&y)))
+        .expect("the planet has land");
+    let v = &base.vertices[land as usize];
+    let dir = v.p().normalize();
     let north = (DVec3::Z - dir * dir.z).normalize();
-    let cam =
-        Camera::new(dir * (R + 2.0), (dir + north * (50.0 / R)).normalize() * R, None, 60.0, 640, 360, 0.5, 2.5, R)
-            .unwrap();
+    let ground = R + v.ground as f64;
+    let cam = Camera::new(
+        dir * (ground + 2.0),
+        (dir + north * (50.0 / R)).normalize() * ground,
+        None,
+        60.0,
+        640,
+        360,
+        0.5,
+        2.5,
+        R,
+    )
+    .unwrap();
     let mut a = Adapter::new(planet().mesh.clone(), Params::default());
     a.adapt(&cam, Some(400_000));
     let mesh = a.mesh();
