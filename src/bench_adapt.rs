@@ -159,3 +159,31 @@ pub fn run(spec: &PlanetSpec) {
         new_tris as f64 / total_ms / 1000.0
     );
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maps::{Map, MapKind, MapLimits};
+    use crate::params::Params;
+
+    /// The benchmark's views of the Earth planet converge: a split that never shortens its edge
+    /// (a wall whose new vertex copies one end's altitude) showed up here as 400 passes of ever
+    /// finer splits instead of a finished mesh.
+    #[test]
+    fn the_benchmark_views_converge() {
+        let bytes =
+            std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_landmask_ne10m_1024x512.png")).unwrap();
+        let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
+        let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(map.into()) };
+        let scene = Scene::new(&spec);
+        for (name, cam) in &scene.views {
+            let s = Adapter::new(scene.planet.mesh.clone(), spec.params.clone()).adapt(cam, None);
+            assert!(s.converged, "{name}: {s:?}");
+        }
+        let mut a = Adapter::new(scene.planet.mesh.clone(), spec.params.clone());
+        for (i, cam) in scene.path.iter().enumerate() {
+            let s = a.adapt(cam, Some(FLY_THROUGH_FACES));
+            assert!(s.converged && s.faces <= FLY_THROUGH_FACES, "frame {i}: {s:?}");
+        }
+    }
+}

@@ -32,17 +32,14 @@ pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
 }
 
 /// The altitude that minimises the steepest slope towards neighbours at `(ground, horizontal
-/// distance, dry)`: every neighbour bounds it from above (`ground + k distance`), dry ones also
-/// from below (`ground - k distance`). The bounds meet for the smallest `k` at which the tightest
-/// lower and upper pair touch (half-lines that meet pairwise meet all together), and that point
-/// is the answer.
-fn least_steep(neighbours: impl Iterator<Item = (f64, f64, bool)> + Clone) -> f64 {
+/// distance)`: the bounds `ground ± k distance` meet for the smallest `k` at which the tightest
+/// pair touches (in one dimension, intervals that meet pairwise meet all together), and that
+/// point is the answer. Between two neighbours it interpolates, so a split of an edge steeper
+/// than s_g halves its height instead of copying one end's altitude.
+fn least_steep(neighbours: &[(f64, f64); 4]) -> f64 {
     let mut best = (f64::MIN, 0.0);
-    for (gi, li, dry) in neighbours.clone() {
-        if !dry {
-            continue;
-        }
-        for (gj, lj, _) in neighbours.clone() {
+    for &(gi, li) in neighbours {
+        for &(gj, lj) in neighbours {
             if gi > gj {
                 let k = (gi - gj) / (li + lj).max(f64::MIN_POSITIVE);
                 if k > best.0 {
@@ -140,13 +137,16 @@ fn continent_vertex(
     // the new vertex on the dry side, so the wall never shortens and refines without end.
     let mut bank_lo = p.sea_level_m + 1.0;
     let mut slope_lo = f64::MIN;
+    let mut any_lo = f64::MIN;
     let mut hi = f64::MAX;
     for (v, le) in around.iter().zip(lens) {
+        let below = v.ground as f64 - le * p.ground_slope();
         if is_wet(v) {
             bank_lo = bank_lo.max(riverbank_floor(v, le, p));
         } else {
-            slope_lo = slope_lo.max(v.ground as f64 - le * p.ground_slope());
+            slope_lo = slope_lo.max(below);
         }
+        any_lo = any_lo.max(below);
         hi = hi.min(v.ground as f64 + le * p.ground_slope());
     }
     let edge_len = m.edge_length(site.edge);
@@ -184,17 +184,17 @@ fn continent_vertex(
     let mean = around.iter().map(|v| v.ground as f64).sum::<f64>() * 0.25;
     let wanted = mean + (xi - 0.5) * land_roughness(edge_len);
     let lo = bank_lo.max(slope_lo);
-    let g = if lo <= hi {
+    let g = if any_lo > hi {
+        // The neighbours (wet ones included) are steeper than s_g across the diamond, or the
+        // split edge itself is: no altitude satisfies eq. 12, so take the one whose steepest
+        // edge is least steep.
+        least_steep(&std::array::from_fn(|i| (around[i].ground as f64, lens[i])))
+    } else if lo <= hi {
         wanted.clamp(lo, hi.min(p.max_mountain_altitude_m.max(lo)))
-    } else if slope_lo <= hi {
+    } else {
         // A riverbank (or sea level) asks for more than the slope allows: the slope wins and
         // the vertex may end up under the river's water (below).
         hi
-    } else {
-        // The neighbours are steeper than s_g across the diamond: no altitude satisfies eq. 12,
-        // so take the one whose steepest edge is least steep.
-        let slopes = around.iter().zip(lens).map(|(v, le)| (v.ground as f64, le, !is_wet(v)));
-        least_steep(slopes)
     };
     // Water: a vertex below a wet neighbour's water surface lies in that river's channel (eq.
     // 11 lets a bank near a deep river sit below the surface) or lake and is covered up to the
