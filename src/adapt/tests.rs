@@ -17,11 +17,15 @@ fn base() -> &'static crate::build::Planet {
 /// A camera `height` metres above the surface point at (lat, lon), looking at a point `ahead`
 /// metres to the north along the ground.
 fn camera(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
-    let dir = crate::build::continents::direction(lat, lon);
+    looking_north(crate::build::continents::direction(lat, lon), R + 3000.0, height, ahead, px)
+}
+
+/// A 320x180 camera `height` metres above the point in direction `dir` at distance `ground` from
+/// the centre, looking at a point `ahead` metres to the north at that distance.
+fn looking_north(dir: DVec3, ground: f64, height: f64, ahead: f64, px: f64) -> Camera {
     let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
-    let eye = dir * (R + 3000.0 + height);
-    let target = (dir + north * (ahead / R)).normalize() * (R + 3000.0);
-    Camera::new(eye, target, None, 60.0, 320, 180, px, px * 5.0, R).unwrap()
+    let target = (dir + north * (ahead / R)).normalize() * ground;
+    Camera::new(dir * (ground + height), target, None, 60.0, 320, 180, px, px * 5.0, R).unwrap()
 }
 
 /// The mesh as sets: triangles by their corners' position bits, and per-vertex altitudes.
@@ -164,11 +168,7 @@ fn check_terrain(m: &Mesh, p: &Params) {
 /// `ahead` metres to the north along the ground.
 fn camera_over(m: &Mesh, v: u32, height: f64, ahead: f64) -> Camera {
     let vert = &m.vertices[v as usize];
-    let dir = vert.p().normalize();
-    let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
-    let ground = R + vert.ground as f64;
-    let target = (dir + north * (ahead / R)).normalize() * ground;
-    Camera::new(dir * (ground + height), target, None, 60.0, 320, 180, 3.0, 15.0, R).unwrap()
+    looking_north(vert.p().normalize(), R + vert.ground as f64, height, ahead, 3.0)
 }
 
 #[test]
