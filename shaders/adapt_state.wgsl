@@ -2,29 +2,8 @@
 // of `src/adapt/state.rs` (`edge_wants`) and `View::wants_split` in `src/adapt/camera.rs`,
 // operation for operation and in the same order, in f64: positions are the mesh's own f64
 // planet-centred metres, so the eye-relative vector, and with it the decision, are those of
-// the CPU. The buffer layouts are `Vertex` and `Edge` of `src/mesh/mod.rs` and `GpuView` of
+// the CPU. The buffer layouts are those of `adapt_mesh.wgsl` (prepended) and `GpuView` of
 // `src/adapt/gpu/state.rs`.
-
-struct Vertex {
-    pos: array<f64, 3>,
-    ground: f32,
-    water: f32,
-    edge: u32,
-    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
-    parent_lod: u32,
-    seed: u32,
-    // `Tangent` (24 bits), flags (u8)
-    bits: u32,
-}
-
-struct Edge {
-    v: array<u32, 2>,
-    f: array<u32, 2>,
-    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
-    lod: u32,
-    // level (u16), kind (u8), padding (u8)
-    bits: u32,
-}
 
 struct View {
     eye: array<f64, 3>,
@@ -45,29 +24,9 @@ struct View {
 @group(0) @binding(2) var<storage, read> view: View;
 @group(0) @binding(3) var<storage, read_write> wants: array<u32>;
 
-const KIND_SEA: u32 = 0u;
-
-// A bfloat16 is the upper half of an f32.
-fn lod_len(lod: u32) -> f32 {
-    return bitcast<f32>(lod << 16u);
-}
-
-fn lod_radius(lod: u32) -> f32 {
-    return bitcast<f32>(lod & 0xffff0000u);
-}
-
 fn position(v: u32) -> vec3<f64> {
     let p = vertices[v].pos;
     return vec3<f64>(p[0], p[1], p[2]);
-}
-
-fn triple(a: array<f64, 3>) -> vec3<f64> {
-    return vec3<f64>(a[0], a[1], a[2]);
-}
-
-// `(a.x * b.x + a.y * b.y) + a.z * b.z`, in that order (glam's dot).
-fn dot3(a: vec3<f64>, b: vec3<f64>) -> f64 {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
 fn wants_split(lod_len: f64, centre: vec3<f64>, radius: f64, sea: bool) -> bool {
@@ -105,7 +64,11 @@ fn edge_wants(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let edge = edges[e];
+    if edge.v[0] == DEAD {
+        wants[e] = 0u;
+        return;
+    }
     let centre = (position(edge.v[0]) + position(edge.v[1])) * f64(0.5);
-    let sea = ((edge.bits >> 16u) & 0xffu) == KIND_SEA;
+    let sea = edge_kind(edge) == KIND_SEA;
     wants[e] = select(0u, 1u, wants_split(f64(lod_len(edge.lod)), centre, f64(lod_radius(edge.lod)), sea));
 }

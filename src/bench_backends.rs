@@ -1,6 +1,6 @@
 //! `riverworld bench --only backends`: view-dependent adaption (paper §5) on the CPU backend
-//! and on the wgpu compute backend over the same views, in one run, with the state update's
-//! per-stage times — host wall time and, where the adapter has timestamp queries, device time.
+//! and on the wgpu compute backend over the same views, in one run, with the device's stage
+//! times (state update, split-list compaction, splits) where the adapter has timestamp queries.
 
 use crate::adapt::gpu::{self, Backend, DeviceTimes, GpuAdaption};
 use crate::adapt::{state, AdaptStats, Adapter, Camera, View};
@@ -15,7 +15,6 @@ use std::time::Instant;
 struct Run {
     mesh: Mesh,
     adapt_ms: f64,
-    state_ms: f64,
     device: DeviceTimes,
 }
 
@@ -34,10 +33,9 @@ fn adapt_all(
     for cam in cams {
         let s = a.adapt(cam, max_faces);
         total.adapt_ms += s.adapt_ms;
-        total.stage_ms.state += s.stage_ms.state;
     }
     let device = gpu.map(|g| g.take_times()).unwrap_or_default();
-    Run { mesh: a.into_mesh(), adapt_ms: total.adapt_ms, state_ms: total.stage_ms.state, device }
+    Run { mesh: a.into_mesh(), adapt_ms: total.adapt_ms, device }
 }
 
 /// Median of `reps` timings of `f`, milliseconds.
@@ -61,6 +59,16 @@ fn kernel(d: &DeviceTimes) -> String {
     }
 }
 
+/// Device time per stage, `state / select / split` milliseconds.
+fn stages(d: &DeviceTimes) -> String {
+    if d.timed {
+        let [a, b, c] = d.stage_ms;
+        format!("{a:.1} / {b:.1} / {c:.1}")
+    } else {
+        "n/a".into()
+    }
+}
+
 /// Prints the two-backend table for `spec`'s planet, or says why the GPU backend is missing.
 pub fn run(spec: &PlanetSpec) {
     let g = match gpu::select(Backend::Gpu) {
@@ -76,10 +84,11 @@ pub fn run(spec: &PlanetSpec) {
     // Compile the pipeline and size the buffers outside the timings.
     let _ = gpu::edge_wants(&g, &planet.mesh, &View::new(&views[0].1, p.radius_m, p.min_edge_length_m));
     println!(
-        "Adaption from the base mesh ({} faces); the state update is the stage on the device.\n",
+        "Adaption from the base mesh ({} faces). On the device: state update, split-list compaction \
+         and splits; collapses and compaction on the CPU.\n",
         planet.stats.faces
     );
-    println!("| view | faces | same mesh | CPU adapt (ms) | CPU state (ms) | GPU adapt (ms) | GPU state wall (ms) | GPU state device (ms) | dispatches | uploaded (MB) |");
+    println!("| view | faces | same mesh | CPU adapt (ms) | GPU adapt (ms) | GPU device (ms) | device state / select / split (ms) | submissions | uploaded (MB) | read back (MB) |");
     println!("|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut cases: Vec<(String, Vec<Camera>, Option<usize>)> =
         views.iter().map(|(n, c)| (n.to_string(), vec![c.clone()], None)).collect();
@@ -89,17 +98,18 @@ pub fn run(spec: &PlanetSpec) {
     for (name, cams, max_faces) in &cases {
         let cpu = adapt_all(&planet.mesh, p, cams, *max_faces, None);
         let dev = adapt_all(&planet.mesh, p, cams, *max_faces, Some(&g));
+        let mb = |b: u64| b as f64 / (1024.0 * 1024.0);
         println!(
-            "| {name} | {} | {} | {:.0} | {:.0} | {:.0} | {:.0} | {} | {} | {:.0} |",
+            "| {name} | {} | {} | {:.0} | {:.0} | {} | {} | {} | {:.0} | {:.0} |",
             cpu.mesh.faces.len(),
             if cpu.mesh == dev.mesh { "yes" } else { "NO" },
             cpu.adapt_ms,
-            cpu.state_ms,
             dev.adapt_ms,
-            dev.state_ms,
             kernel(&dev.device),
+            stages(&dev.device),
             dev.device.dispatches,
-            dev.device.upload_bytes as f64 / (1024.0 * 1024.0),
+            mb(dev.device.upload_bytes),
+            mb(dev.device.download_bytes),
         );
         finals.push((name.clone(), cams.last().cloned(), cpu.mesh));
     }

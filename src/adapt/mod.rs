@@ -98,6 +98,9 @@ pub struct Adapter {
     /// The device for the stages that run on the GPU backend; `None` on the CPU backend.
     #[cfg(feature = "gpu")]
     gpu: Option<std::sync::Arc<gpu::GpuAdaption>>,
+    /// The mesh on that device, while it equals `mesh`.
+    #[cfg(feature = "gpu")]
+    resident: gpu::Resident,
 }
 
 impl Adapter {
@@ -112,6 +115,8 @@ impl Adapter {
             last_step: None,
             #[cfg(feature = "gpu")]
             gpu: None,
+            #[cfg(feature = "gpu")]
+            resident: Default::default(),
         }
     }
 
@@ -119,7 +124,22 @@ impl Adapter {
     #[cfg(feature = "gpu")]
     pub fn with_gpu(mut self, gpu: Option<std::sync::Arc<gpu::GpuAdaption>>) -> Adapter {
         self.gpu = gpu;
+        self.resident = Default::default();
         self
+    }
+
+    /// Replaces the mesh (the device copy, if any, no longer matches) and returns the old one.
+    fn replace_mesh(&mut self, mesh: Mesh) -> Mesh {
+        self.forget_device_mesh();
+        std::mem::replace(&mut self.mesh, mesh)
+    }
+
+    /// Drops the device copy of the mesh, after the host copy changed.
+    fn forget_device_mesh(&mut self) {
+        #[cfg(feature = "gpu")]
+        {
+            self.resident = Default::default();
+        }
     }
 
     /// Whether stages run on the GPU (false after a device failure fell back to the CPU).
@@ -231,10 +251,10 @@ impl Adapter {
                 (false, max + 1)
             } else {
                 if !first {
-                    self.mesh = match &fits {
+                    self.replace_mesh(match &fits {
                         Some((_, m)) => m.clone(),
                         None => self.base.clone(),
-                    };
+                    });
                 }
                 // Later trials start from the base mesh or one that fitted a coarser target:
                 // both are sub-refinements of this target's mesh, so they only refine.
@@ -248,7 +268,7 @@ impl Adapter {
                 if k == 0 || k == over + 1 {
                     break;
                 }
-                fits = Some((k, std::mem::take(&mut self.mesh)));
+                fits = Some((k, self.replace_mesh(Mesh::default())));
             } else {
                 over = k;
                 if k >= MAX_STEP {
@@ -257,7 +277,7 @@ impl Adapter {
                     break;
                 }
                 if fits.as_ref().is_some_and(|(hi, _)| *hi == over + 1) {
-                    self.mesh = fits.take().expect("a fitting mesh").1;
+                    self.replace_mesh(fits.take().expect("a fitting mesh").1);
                     k = over + 1;
                     break;
                 }
@@ -273,6 +293,7 @@ impl Adapter {
 
     /// Compacts the mesh, in spatial order when it is [`compact::scattered`].
     fn compact(&mut self) {
+        self.forget_device_mesh();
         let spatial = compact::scattered(self.mesh.faces.len(), self.ordered_faces);
         compact::compact(&mut self.mesh, spatial);
         self.ordered_faces =
@@ -299,7 +320,9 @@ impl Adapter {
         ((room / added).max(1.0).ln() / (2.0 * BUDGET_STEP.ln())).floor() as i32
     }
 
-    /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit.
+    /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit;
+    /// refine-only runs on the device when the adapter has one (`gpu/adapt.rs`, the same
+    /// passes).
     ///
     /// With the camera fixed, an edge's answer never changes, so the flags are computed once
     /// and then only for edges the splits touched; collapses are looked for in the first pass,
@@ -314,6 +337,30 @@ impl Adapter {
     /// compacted once at the end, or early when they outgrow a quarter of the faces (or the
     /// slack `N_ALLOC`).
     fn run(
+        &mut self,
+        view: &View,
+        cap: Option<usize>,
+        refine_only: bool,
+        wishes: Option<Vec<bool>>,
+        stats: &mut AdaptStats,
+    ) -> bool {
+        #[cfg(feature = "gpu")]
+        if let (Some(g), true) = (self.gpu.clone(), refine_only) {
+            match self.refine_on_device(&g, view, cap, stats) {
+                Ok(converged) => return converged,
+                Err(e) => {
+                    // The host mesh is still the one the run started from.
+                    tracing::warn!("GPU adaption failed ({e}); continuing on the CPU");
+                    self.gpu = None;
+                }
+            }
+        }
+        self.forget_device_mesh();
+        self.run_on_cpu(view, cap, refine_only, wishes, stats)
+    }
+
+    /// [`Adapter::run`] on the CPU.
+    fn run_on_cpu(
         &mut self,
         view: &View,
         cap: Option<usize>,

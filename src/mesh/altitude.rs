@@ -13,14 +13,18 @@ use glam::DVec3;
 
 /// Relative roughness of the sea floor's midpoint displacement (offset per metre of edge length
 /// at the extremes of the random number).
-const SEA_ROUGHNESS: f64 = 0.02;
+pub const SEA_ROUGHNESS: f64 = 0.02;
+/// [`land_roughness`]: the offset range per metre of a short edge, and the edge length at which
+/// it has flattened to half of that.
+pub const LAND_ROUGHNESS: f64 = 0.15;
+pub const LAND_ROUGHNESS_LENGTH: f64 = 2000.0;
 
 /// Full range of the random offset a continent split adds to the mean of its four neighbours:
 /// 15 % of the edge length for short edges, flattening to ~300 m for long ones, so relief grows
 /// with detail but coarse splits cannot pile up kilometres of noise. The paper only asks for "a
 /// random value inside the bounds"; this is our choice, documented.
 pub fn land_roughness(edge_len: f64) -> f64 {
-    0.15 * edge_len / (1.0 + edge_len / 2000.0)
+    LAND_ROUGHNESS * edge_len / (1.0 + edge_len / LAND_ROUGHNESS_LENGTH)
 }
 
 /// Eq. 11: the lowest ground a vertex `le` metres (horizontally) from the wet vertex `v` may

@@ -2,7 +2,7 @@
 
 /// A face belongs to the sea or to a continent.
 #[repr(u8)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
 pub enum FaceKind {
     Sea = 0,
     Land = 1,
@@ -10,7 +10,7 @@ pub enum FaceKind {
 
 /// Edges are sea, coast or continent from their two faces; continent edges may be rivers.
 #[repr(u8)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
 pub enum EdgeKind {
     Sea = 0,
     Coast = 1,
@@ -35,7 +35,7 @@ impl EdgeKind {
 /// A vertex has all the types of its incident edges (§3.2), as bits, and a mark for vertices
 /// made by adaption.
 #[repr(transparent)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
 pub struct VertexFlags(pub u8);
 
 impl VertexFlags {

@@ -33,7 +33,7 @@ pub const NONE: u32 = u32::MAX;
 
 /// One vertex (Table 3, "active vertices"): 48 bytes.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
 pub struct Vertex {
     /// Position, planet-centred metres.
     pub pos: [f64; 3],
@@ -57,7 +57,7 @@ pub struct Vertex {
 
 /// One edge (Table 3, "active edges"): 24 bytes.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
 pub struct Edge {
     /// End points. `f[0]` is the face that walks `v[0] -> v[1]` counter-clockwise.
     pub v: [u32; 2],
@@ -78,7 +78,7 @@ pub struct Edge {
 
 /// One triangle (Table 3, "active faces").
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
 pub struct Face {
     /// Corners, counter-clockwise seen from outside the planet; `v[0]` is the newest vertex.
     pub v: [u32; 3],
@@ -150,8 +150,8 @@ pub const VERTEX_BYTES: usize = std::mem::size_of::<Vertex>();
 pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
-// The WGSL twins of these structs (`shaders/adapt_*.wgsl`) spell the same layouts out.
-const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24);
+// The WGSL twins of these structs (`shaders/adapt_mesh.wgsl`) spell the same layouts out.
+const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 28);
 
 impl Mesh {
     pub fn pos(&self, v: u32) -> DVec3 {

@@ -12,7 +12,7 @@ use glam::DVec3;
 /// Level-of-detail bounds of an edge: a length and the radius of a ball around the edge's
 /// midpoint, each a bfloat16 (the upper half of an `f32`), rounded towards minus infinity.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
 pub struct Lod {
     len: u16,
     radius: u16,
@@ -52,12 +52,17 @@ fn bf16_down(x: f64) -> u16 {
 /// `2048 + round(2047 c)` in 12 bits (x in the low bits of three little-endian bytes); the code
 /// 0, which no unit vector takes, is no direction.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, bytemuck::NoUninit)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
 pub struct Tangent([u8; 3]);
 
 const SCALE: f64 = 2047.0;
+const OFFSET: f64 = 2048.0;
 
 impl Tangent {
+    /// Codes per unit of an octahedral coordinate, and the code of zero.
+    pub const SCALE: f64 = SCALE;
+    pub const OFFSET: f64 = OFFSET;
+
     /// No direction.
     pub const ZERO: Tangent = Tangent([0; 3]);
 
@@ -71,7 +76,7 @@ impl Tangent {
         if t.z < 0.0 {
             (x, y) = ((1.0 - y.abs()) * sign(x), (1.0 - x.abs()) * sign(y));
         }
-        let [x, y] = [x, y].map(|c| (2048.0 + (c * SCALE).round().clamp(-SCALE, SCALE)) as u32);
+        let [x, y] = [x, y].map(|c| (OFFSET + (c * SCALE).round().clamp(-SCALE, SCALE)) as u32);
         let [b0, b1, b2, _] = (x | y << 12).to_le_bytes();
         Tangent([b0, b1, b2])
     }
@@ -83,7 +88,7 @@ impl Tangent {
         }
         let [b0, b1, b2] = self.0;
         let bits = u32::from_le_bytes([b0, b1, b2, 0]);
-        let [x, y] = [bits & 0xfff, bits >> 12].map(|c| (c as f64 - 2048.0) / SCALE);
+        let [x, y] = [bits & 0xfff, bits >> 12].map(|c| (c as f64 - OFFSET) / SCALE);
         let z = 1.0 - x.abs() - y.abs();
         let (x, y) = if z < 0.0 { ((1.0 - y.abs()) * sign(x), (1.0 - x.abs()) * sign(y)) } else { (x, y) };
         DVec3::new(x, y, z).normalize()

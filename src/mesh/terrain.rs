@@ -83,7 +83,8 @@ pub fn well_shaped(mesh: &Mesh, site: &SplitSite, p: DVec3) -> DVec3 {
     let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v).normalize());
     let c = edge_centre(mesh, site);
     for scale in [1.0, 0.5, 0.25] {
-        let x = c + (p - c) * scale;
+        // `p` itself at full scale (`c + (p - c)` can differ from `p` in the last bit).
+        let x = if scale == 1.0 { p } else { c + (p - c) * scale };
         let m = x.normalize();
         let q = face_quality(m, t, a).min(face_quality(m, b, t)).min(face_quality(m, a, d)).min(face_quality(m, d, b));
         if q >= MIN_SPLIT_QUALITY {

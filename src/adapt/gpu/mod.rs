@@ -1,10 +1,14 @@
 //! The wgpu compute backend of view-dependent adaption (paper §5): each stage that runs on the
 //! device has its WGSL twin in `shaders/adapt_*.wgsl`, reading the mesh buffers in the
-//! `#[repr(C)]` layouts of `crate::mesh` (`Vertex`, `Edge`) through bytemuck.
+//! `#[repr(C)]` layouts of `crate::mesh` (`Vertex`, `Edge`, `Face`, spelt out once for the
+//! shaders in `shaders/adapt_mesh.wgsl`) through bytemuck.
 //!
-//! On the device so far: the state update's split wishes (`state.rs`, `adapt_state.wgsl`). The
-//! other stages (split-list compaction, splits, collapses, compaction) run on the CPU between
-//! dispatches, so the mesh is uploaded for each state update.
+//! On the device: the state update (`state.rs`), split-list compaction with its prefix sums
+//! (`select.rs`) and the edge splits with their terrain (`split.rs`), on a mesh that stays
+//! resident between passes and runs (`buffers.rs`); a pass reads back two counts. Refining runs
+//! (views from the base mesh, the face budget's finer trials) run there (`adapt.rs`); vertex
+//! collapses and buffer compaction are not on the device yet, so runs that coarsen stay on the
+//! CPU.
 //!
 //! Precision: the shaders compute in `f64` (wgpu's `SHADER_F64`), on the mesh's own
 //! planet-centred `f64` positions, with the operations of the CPU code in the same order, so a
@@ -13,9 +17,16 @@
 //! only for an edge within about 1e-15 (relative) of its threshold. Adapters without `f64`
 //! (e.g. Metal) are refused: `auto` stays on the CPU there.
 
+mod adapt;
+mod buffers;
+mod select;
+mod split;
 mod state;
 
+pub use adapt::Resident;
+pub use buffers::DeviceMesh;
 use std::sync::Arc;
+use std::time::Instant;
 
 /// Where adaption runs (`--backend`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -59,24 +70,40 @@ pub struct GpuAdaption {
     device: wgpu::Device,
     queue: wgpu::Queue,
     info: wgpu::AdapterInfo,
-    state: state::StagePipeline,
-    /// What the dispatches since the last [`GpuAdaption::take_times`] cost.
+    state: state::StatePipeline,
+    select: select::SelectPipeline,
+    split: split::SplitPipeline,
+    /// A begin and an end timestamp per [`Stage`], where the device has timestamp queries.
+    stamps: Option<wgpu::QuerySet>,
+    /// What the submissions since the last [`GpuAdaption::take_times`] cost.
     times: std::sync::Mutex<DeviceTimes>,
 }
 
-/// What device work cost (`riverworld bench --only adapt`): summed over dispatches.
+/// The stages that run on the device, in timestamp order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Stage {
+    State = 0,
+    Select = 1,
+    Split = 2,
+}
+
+/// What device work cost (`riverworld bench --only adapt`): summed over submissions.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct DeviceTimes {
-    /// State updates run on the device.
+    /// Command submissions waited for (about one per pass).
     pub dispatches: u32,
-    /// Host wall time of those calls: upload, dispatch, wait and readback, milliseconds.
+    /// Host wall time of those submissions: encoding, waiting and reading back, milliseconds.
     pub wall_ms: f64,
     /// Device time of the compute passes from timestamp queries, milliseconds (0 if untimed).
     pub kernel_ms: f64,
+    /// The same per stage: state update, split-list compaction, splits.
+    pub stage_ms: [f64; 3],
     /// Whether the adapter has timestamp queries (`kernel_ms` is measured).
     pub timed: bool,
     /// Bytes written to the device.
     pub upload_bytes: u64,
+    /// Bytes of mesh and flags read back (counts and timestamps not included).
+    pub download_bytes: u64,
 }
 
 impl DeviceTimes {
@@ -84,8 +111,12 @@ impl DeviceTimes {
         self.dispatches += o.dispatches;
         self.wall_ms += o.wall_ms;
         self.kernel_ms += o.kernel_ms;
+        for (a, b) in self.stage_ms.iter_mut().zip(o.stage_ms) {
+            *a += b;
+        }
         self.timed |= o.timed;
         self.upload_bytes += o.upload_bytes;
+        self.download_bytes += o.download_bytes;
     }
 }
 
@@ -108,6 +139,13 @@ impl GpuAdaption {
             return Err(GpuError::NoF64(format!("{} ({:?})", info.name, info.backend)));
         }
         let limits = adapter.limits();
+        // The split-list compaction binds six storage buffers.
+        if limits.max_storage_buffers_per_shader_stage < 6 {
+            return Err(GpuError::Device(format!(
+                "{} ({:?}) allows {} storage buffers per shader stage; adaption needs 6",
+                info.name, info.backend, limits.max_storage_buffers_per_shader_stage
+            )));
+        }
         let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
         let mut required_features = wgpu::Features::SHADER_F64;
         if timestamps {
@@ -120,13 +158,27 @@ impl GpuAdaption {
                 max_buffer_size: limits.max_buffer_size,
                 max_storage_buffer_binding_size: limits.max_storage_buffer_binding_size,
                 max_compute_workgroups_per_dimension: limits.max_compute_workgroups_per_dimension,
+                max_storage_buffers_per_shader_stage: limits.max_storage_buffers_per_shader_stage,
                 ..wgpu::Limits::downlevel_defaults()
             },
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(format!("{} ({:?}): {e}", info.name, info.backend)))?;
-        let state = state::StagePipeline::new(&device, timestamps);
-        Ok(GpuAdaption { device, queue, info, state, times: Default::default() })
+        let stamps = timestamps.then(|| {
+            device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("adaption stage timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count: 2 * buffers::STAGES as u32,
+            })
+        });
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let state = state::StatePipeline::new(&device);
+        let select = select::SelectPipeline::new(&device);
+        let split = split::SplitPipeline::new(&device);
+        if let Some(e) = futures::executor::block_on(scope.pop()) {
+            return Err(GpuError::Device(format!("{} ({:?}): {e}", info.name, info.backend)));
+        }
+        Ok(GpuAdaption { device, queue, info, state, select, split, stamps, times: Default::default() })
     }
 
     /// The adapter, in words.
@@ -194,7 +246,134 @@ pub fn select(backend: Backend) -> Result<(Option<Arc<GpuAdaption>>, String), Gp
     }
 }
 
-pub use state::edge_wants;
+/// Whether each edge of `mesh` wants to be split for `view`, decided on the device (the mesh is
+/// uploaded for it; adaption itself keeps its mesh resident instead).
+pub fn edge_wants(
+    gpu: &GpuAdaption,
+    mesh: &crate::mesh::Mesh,
+    view: &crate::adapt::View,
+) -> Result<Vec<bool>, GpuError> {
+    if mesh.edges.is_empty() {
+        return Ok(Vec::new());
+    }
+    let dm = DeviceMesh::upload(gpu, mesh)?;
+    let mut sub = gpu.submission();
+    gpu.state.encode(gpu, &mut sub, &dm, view);
+    sub.finish(gpu, &dm)?;
+    dm.download_wants(gpu)
+}
+
+/// Workgroups `(x, y)` covering `n` invocations of `size`, and invocations per row of the grid
+/// (the index of an invocation is `x + y * row`).
+pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u32, u32) {
+    let groups = n.div_ceil(size).max(1);
+    let gx = groups.min(device.limits().max_compute_workgroups_per_dimension);
+    (gx, groups.div_ceil(gx), gx * size)
+}
+
+/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own source.
+fn shader(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
+    let full = format!("{}\n{}", include_str!("../../../shaders/adapt_mesh.wgsl"), source);
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(full.into()),
+    })
+}
+
+/// The compute pipeline of `entry` in `module`, its bind group layout derived from the shader.
+fn pipeline(device: &wgpu::Device, module: &wgpu::ShaderModule, entry: &str) -> wgpu::ComputePipeline {
+    device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(entry),
+        layout: None,
+        module,
+        entry_point: Some(entry),
+        compilation_options: Default::default(),
+        cache: None,
+    })
+}
+
+/// A bind group for `pipeline`'s group 0 with the whole buffers at the given bindings.
+fn bind(device: &wgpu::Device, pipeline: &wgpu::ComputePipeline, entries: &[(u32, &wgpu::Buffer)]) -> wgpu::BindGroup {
+    let entries: Vec<wgpu::BindGroupEntry> =
+        entries.iter().map(|&(binding, b)| wgpu::BindGroupEntry { binding, resource: b.as_entire_binding() }).collect();
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &entries,
+    })
+}
+
+/// Commands being recorded for one submission, with the error scopes that watch them.
+pub(crate) struct Submission {
+    pub encoder: wgpu::CommandEncoder,
+    oom: wgpu::ErrorScopeGuard,
+    validation: wgpu::ErrorScopeGuard,
+    start: Instant,
+    /// Stages whose timestamps this submission writes (bit per [`Stage`]).
+    stages: std::cell::Cell<u8>,
+}
+
+impl GpuAdaption {
+    /// Starts recording a submission.
+    pub(crate) fn submission(&self) -> Submission {
+        let oom = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("adaption") });
+        Submission { encoder, oom, validation, start: Instant::now(), stages: Default::default() }
+    }
+}
+
+impl Submission {
+    /// A compute pass of `stage`, timed where the device has timestamp queries.
+    fn pass<'e>(&'e mut self, gpu: &'e GpuAdaption, stage: Stage) -> wgpu::ComputePass<'e> {
+        let s = stage as u32;
+        self.stages.set(self.stages.get() | 1 << s);
+        let timestamp_writes = gpu.stamps.as_ref().map(|q| wgpu::ComputePassTimestampWrites {
+            query_set: q,
+            beginning_of_pass_write_index: Some(2 * s),
+            end_of_pass_write_index: Some(2 * s + 1),
+        });
+        self.encoder
+            .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("adaption stage"), timestamp_writes })
+    }
+
+    /// Submits, waits, and returns `dm.counts` (`[ready edges, wanted edges]` of the last
+    /// split-list compaction); device errors raised by the recorded work are returned.
+    pub(crate) fn finish(self, gpu: &GpuAdaption, dm: &DeviceMesh) -> Result<[usize; 2], GpuError> {
+        let Submission { mut encoder, oom, validation, start, stages } = self;
+        let stages = stages.get();
+        encoder.copy_buffer_to_buffer(&dm.counts, 0, &dm.readback, 0, 8);
+        if let Some(q) = &gpu.stamps {
+            for s in 0..buffers::STAGES as u32 {
+                if stages & 1 << s != 0 {
+                    let at = wgpu::QUERY_RESOLVE_BUFFER_ALIGNMENT * s as u64;
+                    encoder.resolve_query_set(q, 2 * s..2 * s + 2, &dm.stamps, at);
+                    encoder.copy_buffer_to_buffer(&dm.stamps, at, &dm.readback, buffers::STAMPS_AT + 16 * s as u64, 16);
+                }
+            }
+        }
+        gpu.queue.submit([encoder.finish()]);
+        let invalid = futures::executor::block_on(validation.pop());
+        if let Some(e) = futures::executor::block_on(oom.pop()).or(invalid) {
+            return Err(GpuError::Device(e.to_string()));
+        }
+        let words = buffers::map_words(gpu, &dm.readback, buffers::STAMPS_AT + 16 * buffers::STAGES as u64)?;
+        let mut t = DeviceTimes { dispatches: 1, timed: gpu.stamps.is_some(), ..Default::default() };
+        if gpu.stamps.is_some() {
+            let period = gpu.queue.get_timestamp_period() as f64;
+            for s in 0..buffers::STAGES {
+                if stages & 1 << s != 0 {
+                    let tick = |i: usize| words[2 + 2 * i] as u64 | (words[3 + 2 * i] as u64) << 32;
+                    t.stage_ms[s] = tick(2 * s + 1).saturating_sub(tick(2 * s)) as f64 * period / 1e6;
+                }
+            }
+            t.kernel_ms = t.stage_ms.iter().sum();
+        }
+        t.wall_ms = start.elapsed().as_secs_f64() * 1000.0;
+        gpu.record(t);
+        Ok([words[0] as usize, words[1] as usize])
+    }
+}
 
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,118 @@
+// The mesh buffers of `src/mesh/mod.rs` (`Vertex`, `Edge`, `Face`, paper Table 3) as the
+// adaption shaders read them, and the arithmetic they share. Prepended to every
+// `adapt_*.wgsl` stage, so each layout is spelt out once on the device side.
+//
+// Every f64 operation follows the CPU code (glam's `DVec3`, `src/rng.rs`) operation for
+// operation and in the same order, so a device that rounds f64 arithmetic and `sqrt` correctly
+// without fusing multiply-adds (lavapipe) computes the CPU's values bit for bit.
+
+struct Vertex {
+    pos: array<f64, 3>,
+    ground: f32,
+    water: f32,
+    edge: u32,
+    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
+    parent_lod: u32,
+    seed: u32,
+    // `Tangent` (24 bits, low), flags (u8, high)
+    bits: u32,
+}
+
+struct Edge {
+    v: array<u32, 2>,
+    f: array<u32, 2>,
+    // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
+    lod: u32,
+    // level (u16), kind (u8), padding (u8)
+    bits: u32,
+}
+
+struct Face {
+    v: array<u32, 3>,
+    e: array<u32, 3>,
+    // kind (u8), padding (3 bytes)
+    kind: u32,
+}
+
+const NONE: u32 = 0xffffffffu;
+// An entity a collapse removed, until compaction (`mesh::split::DEAD`).
+const DEAD: u32 = 0xfffffffeu;
+
+const KIND_SEA: u32 = 0u;
+const KIND_COAST: u32 = 1u;
+const KIND_CONTINENT: u32 = 2u;
+const KIND_RIVER: u32 = 3u;
+const FACE_SEA: u32 = 0u;
+
+const FLAG_RIVER: u32 = 8u;
+const FLAG_REFINED: u32 = 64u;
+
+const F64_MAX: f64 = 1.7976931348623157e308lf;
+
+fn edge_kind(e: Edge) -> u32 {
+    return (e.bits >> 16u) & 0xffu;
+}
+
+fn edge_level(e: Edge) -> u32 {
+    return e.bits & 0xffffu;
+}
+
+fn vertex_flags(v: Vertex) -> u32 {
+    return v.bits >> 24u;
+}
+
+// A bfloat16 is the upper half of an f32.
+fn lod_len(lod: u32) -> f32 {
+    return bitcast<f32>(lod << 16u);
+}
+
+fn lod_radius(lod: u32) -> f32 {
+    return bitcast<f32>(lod & 0xffff0000u);
+}
+
+fn triple(a: array<f64, 3>) -> vec3<f64> {
+    return vec3<f64>(a[0], a[1], a[2]);
+}
+
+// `(a.x * b.x + a.y * b.y) + a.z * b.z`, in that order (glam's dot).
+fn dot3(a: vec3<f64>, b: vec3<f64>) -> f64 {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+fn length3(a: vec3<f64>) -> f64 {
+    return sqrt(dot3(a, a));
+}
+
+fn distance3(a: vec3<f64>, b: vec3<f64>) -> f64 {
+    return length3(a - b);
+}
+
+// glam's `normalize`: times the reciprocal of the length.
+fn normalize3(a: vec3<f64>) -> vec3<f64> {
+    return a * (f64(1.0) / length3(a));
+}
+
+fn cross3(a: vec3<f64>, b: vec3<f64>) -> vec3<f64> {
+    return vec3<f64>(a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y);
+}
+
+// `mix32` of `src/rng.rs` (lowbias32).
+fn mix32(seed: u32) -> u32 {
+    var x = seed;
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+// `unit` of `src/rng.rs`: uniform in [0, 1) for a seed and a salt.
+fn unit(seed: u32, salt: u32) -> f64 {
+    let h = mix32(seed ^ mix32(salt * 0x9e3779b9u + 0x632be5abu));
+    return f64(h) / f64(4294967296.0);
+}
+
+fn uniform_in(seed: u32, salt: u32, lo: f64, hi: f64) -> f64 {
+    return lo + (hi - lo) * unit(seed, salt);
+}

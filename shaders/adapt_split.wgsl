@@ -1,0 +1,501 @@
+// Parallel edge splits (paper §5.3, Algorithm 2 steps 3-6): one invocation per ready edge of the
+// split list. The twin of `split_vertex` (`src/mesh/altitude.rs`, `src/mesh/terrain.rs`: new
+// vertex positions by eq. 2 / eq. 7-9, altitudes by step 6 and eq. 10-12) and of
+// `Buffers::split` (`src/mesh/batch.rs`: the topology), operation for operation.
+//
+// Race-free as the paper argues: a ready edge is the refinement edge of both its faces, so a
+// split owns its edge, its two faces and its new slots; what two splits can share is an outer
+// edge, of which each rewrites only the face slot holding its own face, and a corner vertex,
+// whose edge link only the split owning the linked edge moves. Both are single-word writes to
+// words no other invocation writes, and the fields the splits read of their neighbours
+// (positions, altitudes, seeds, tangents, flags) are not written by any split.
+//
+// Layouts: `adapt_mesh.wgsl` (prepended) and `SplitParams` of `src/adapt/gpu/split.rs`.
+
+struct SplitParams {
+    radius: f64,
+    sea_level: f64,
+    riverbed_edge_height: f64,
+    max_river_depth: f64,
+    min_river_length: f64,
+    max_river_altitude: f64,
+    max_mountain_altitude: f64,
+    riverbed_slope: f64,
+    near_river_slope: f64,
+    ground_slope: f64,
+    river_slope: f64,
+    // `2 sqrt(3)` as the CPU computes it, and `MIN_SPLIT_QUALITY`.
+    quality_scale: f64,
+    min_quality: f64,
+    // The constants of the terrain arithmetic, read at run time: compilers rewrite expressions
+    // with literal constants (lavapipe folded `(1 - a) + b` into `(b - a) + 1` and a constant
+    // factor into a neighbouring sum), which round differently; they cannot rewrite with values
+    // they do not know. `SplitParams::new` gives the CPU's values.
+    one: f64,
+    half: f64,
+    quarter: f64,
+    three_quarters: f64,
+    sea_roughness: f64,
+    roughness: f64,
+    roughness_length: f64,
+    tangent_scale: f64,
+    tangent_offset: f64,
+    // Slots where the new vertices, edges and faces start.
+    vertices: u32,
+    edges: u32,
+    faces: u32,
+    // Splits in the list, and invocations per row of the dispatch (split = x + y * row).
+    count: u32,
+    row: u32,
+    _pad: u32,
+}
+
+@group(0) @binding(0) var<storage, read_write> vertices: array<Vertex>;
+@group(0) @binding(1) var<storage, read_write> edges: array<Edge>;
+@group(0) @binding(2) var<storage, read_write> faces: array<Face>;
+@group(0) @binding(3) var<storage, read> list: array<u32>;
+@group(0) @binding(4) var<uniform> p: SplitParams;
+
+const SALT_XI: u32 = 1u;
+const SALT_ETA: u32 = 2u;
+const SALT_ALTITUDE: u32 = 3u;
+const SALT_RIVER: u32 = 4u;
+const F64_MIN_POSITIVE: f64 = 2.2250738585072014e-308lf;
+const F32_MIN: f32 = -3.40282347e38f;
+
+struct Site {
+    edge: u32,
+    a: u32,
+    b: u32,
+    t: u32,
+    d: u32,
+    f1: u32,
+    f2: u32,
+}
+
+// A new vertex and the kinds of `[e1, e2, e3, e4]`.
+struct Made {
+    v: Vertex,
+    kinds: array<u32, 4>,
+}
+
+fn pos(v: u32) -> vec3<f64> {
+    return triple(vertices[v].pos);
+}
+
+fn sign1(x: f64) -> f64 {
+    if x < f64(0.0) {
+        return f64(-1.0);
+    }
+    return f64(1.0);
+}
+
+// Rust's `f64::round`: halves away from zero.
+fn round_away(x: f64) -> f64 {
+    let a = abs(x);
+    var r = floor(a);
+    if a - r >= f64(0.5) {
+        r += f64(1.0);
+    }
+    if x < f64(0.0) {
+        return -r;
+    }
+    return r;
+}
+
+// `Tangent::get` (`src/mesh/packed.rs`): octahedral code to unit vector.
+fn tangent_get(code: u32) -> vec3<f64> {
+    if code == 0u {
+        return vec3<f64>(f64(0.0), f64(0.0), f64(0.0));
+    }
+    var x = (f64(code & 0xfffu) - p.tangent_offset) / p.tangent_scale;
+    var y = (f64(code >> 12u) - p.tangent_offset) / p.tangent_scale;
+    let z = p.one - abs(x) - abs(y);
+    if z < f64(0.0) {
+        let x0 = x;
+        x = (p.one - abs(y)) * sign1(x0);
+        y = (p.one - abs(x0)) * sign1(y);
+    }
+    return normalize3(vec3<f64>(x, y, z));
+}
+
+// `Tangent::new`: unit vector to octahedral code (0: no direction).
+fn tangent_code(t: vec3<f64>) -> u32 {
+    let l1 = abs(t.x) + abs(t.y) + abs(t.z);
+    if !(l1 > f64(0.0) && l1 <= F64_MAX) {
+        return 0u;
+    }
+    var x = t.x / l1;
+    var y = t.y / l1;
+    if t.z < f64(0.0) {
+        let x0 = x;
+        x = (p.one - abs(y)) * sign1(x0);
+        y = (p.one - abs(x0)) * sign1(y);
+    }
+    let cx = u32(p.tangent_offset + clamp(round_away(x * p.tangent_scale), f64(-2047.0), f64(2047.0)));
+    let cy = u32(p.tangent_offset + clamp(round_away(y * p.tangent_scale), f64(-2047.0), f64(2047.0)));
+    return cx | (cy << 12u);
+}
+
+// `f32::next_down`.
+fn next_down(f: f32) -> f32 {
+    let bits = bitcast<u32>(f);
+    if (bits & 0x7fffffffu) == 0u {
+        return bitcast<f32>(0x80000001u);
+    }
+    if f > 0.0 {
+        return bitcast<f32>(bits - 1u);
+    }
+    return bitcast<f32>(bits + 1u);
+}
+
+// `bf16_down`: the largest bfloat16 not above `x`, as its bits.
+fn bf16_down(x: f64) -> u32 {
+    var f = f32(x);
+    if f64(f) > x {
+        f = next_down(f);
+    }
+    let bits = bitcast<u32>(f);
+    let high = bits >> 16u;
+    if f < 0.0 && (bits & 0xffffu) != 0u {
+        return high + 1u;
+    }
+    return high;
+}
+
+fn lod_new(len: f64, radius: f64) -> u32 {
+    return bf16_down(len) | (bf16_down(radius) << 16u);
+}
+
+// Eq. 1.
+fn lift(q: vec3<f64>, altitude: f64) -> vec3<f64> {
+    return normalize3(q) * (p.radius + altitude);
+}
+
+fn tangent_towards(src: vec3<f64>, dst: vec3<f64>) -> vec3<f64> {
+    let up = normalize3(src);
+    let d = dst - src;
+    let t = d - up * dot3(d, up);
+    // glam's `normalize_or_zero`.
+    let rcp = f64(1.0) / length3(t);
+    if rcp <= F64_MAX && rcp > f64(0.0) {
+        return t * rcp;
+    }
+    return vec3<f64>(f64(0.0), f64(0.0), f64(0.0));
+}
+
+fn land_roughness(edge_len: f64) -> f64 {
+    return p.roughness * edge_len / (p.one + edge_len / p.roughness_length);
+}
+
+fn edge_centre(s: Site) -> vec3<f64> {
+    return (pos(s.a) + pos(s.b)) * p.half;
+}
+
+// Eq. 2.
+fn weighted_position(s: Site, seed: u32) -> vec3<f64> {
+    let xi = uniform_in(seed, SALT_XI, p.quarter, p.three_quarters);
+    let eta = uniform_in(seed, SALT_ETA, p.quarter, p.three_quarters);
+    let a = pos(s.a);
+    let b = pos(s.b);
+    let t = pos(s.t);
+    let d = pos(s.d);
+    return (p.one - eta) * (xi * a + (p.one - xi) * t) + eta * (xi * d + (p.one - xi) * b);
+}
+
+// Eq. 7-9.
+fn river_position(s: Site, seed: u32) -> vec3<f64> {
+    let xi0 = uniform_in(seed, SALT_XI, p.quarter, p.three_quarters);
+    let a = pos(s.a);
+    let b = pos(s.b);
+    let t = pos(s.t);
+    let d = pos(s.d);
+    let ab = distance3(a, b);
+    if ab >= p.min_river_length {
+        return (p.one - xi0) * t + xi0 * d;
+    }
+    let a_up = vertices[s.a].water >= vertices[s.b].water;
+    let up = select(s.b, s.a, a_up);
+    let down = select(s.a, s.b, a_up);
+    let tu = tangent_get(vertices[up].bits & 0xffffffu);
+    let td = tangent_get(vertices[down].bits & 0xffffffu);
+    // Times the run-time one: left as a sum, lavapipe folded the `- d` below into it.
+    let vs = ((a + b) * p.half + ab * (tu - td) * p.quarter) * p.one;
+    let td_line = t - d;
+    let denom = dot3(td_line, td_line);
+    let sx = select(p.half, p.one - dot3(vs - d, td_line) / denom, denom > f64(0.0));
+    let xi = clamp(sx + p.quarter * (xi0 - p.half), f64(0.25), f64(0.75));
+    return (p.one - xi) * t + xi * d;
+}
+
+fn face_quality(x: vec3<f64>, y: vec3<f64>, z: vec3<f64>) -> f64 {
+    let twice_area = dot3(cross3(x, y), z);
+    let sides = dot3(x - y, x - y) + dot3(y - z, y - z) + dot3(z - x, z - x);
+    return p.quality_scale * twice_area / sides;
+}
+
+// `well_shaped`: the randomised point, or pulled towards the edge centre.
+fn well_shaped(s: Site, q: vec3<f64>) -> vec3<f64> {
+    let a = normalize3(pos(s.a));
+    let b = normalize3(pos(s.b));
+    let t = normalize3(pos(s.t));
+    let d = normalize3(pos(s.d));
+    let c = edge_centre(s);
+    var scale = f64(1.0);
+    for (var i = 0u; i < 3u; i++) {
+        var x = q;
+        if i > 0u {
+            x = c + (q - c) * scale;
+        }
+        let m = normalize3(x);
+        let worst = min(min(min(face_quality(m, t, a), face_quality(m, b, t)), face_quality(m, a, d)), face_quality(m, d, b));
+        if worst >= p.min_quality {
+            return x;
+        }
+        scale *= p.half;
+    }
+    return c;
+}
+
+fn split_position(s: Site, seed: u32, kind: u32) -> vec3<f64> {
+    if kind == KIND_SEA {
+        return edge_centre(s);
+    }
+    if kind == KIND_RIVER {
+        return well_shaped(s, river_position(s, seed));
+    }
+    return well_shaped(s, weighted_position(s, seed));
+}
+
+fn new_vertex(at: vec3<f64>, seed: u32, ground: f64, water: f64, flags: u32, tangent: u32) -> Vertex {
+    let q = lift(at, ground);
+    return Vertex(array<f64, 3>(q.x, q.y, q.z), f32(ground), f32(water), NONE, 0u, seed, tangent | (flags << 24u));
+}
+
+// `wet_vertex`: sea floor, shore, or river interpolated.
+fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
+    let va = vertices[s.a];
+    let vb = vertices[s.b];
+    let xi = unit(seed, SALT_ALTITUDE);
+    let sea = p.sea_level;
+    let mid_ground = (f64(va.ground) + f64(vb.ground)) * p.half;
+    let len = distance3(pos(s.a), pos(s.b));
+    if kind == KIND_SEA {
+        let g = min(mid_ground + (xi - p.half) * len * p.sea_roughness, sea - p.one);
+        return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
+    }
+    if kind == KIND_COAST {
+        let rough = min(p.riverbed_edge_height, land_roughness(len));
+        let g = clamp(mid_ground + (xi - p.half) * rough, sea - p.max_river_depth, sea + p.riverbed_edge_height);
+        return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
+    }
+    let w = (f64(va.water) + f64(vb.water)) * p.half;
+    var up = va;
+    var down = vb;
+    if !(va.water >= vb.water) {
+        up = vb;
+        down = va;
+    }
+    let tangent = tangent_code(tangent_towards(triple(up.pos), triple(down.pos)));
+    return new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED, tangent);
+}
+
+fn is_wet(v: Vertex) -> bool {
+    return (vertex_flags(v) & FLAG_RIVER) != 0u || v.water > v.ground;
+}
+
+// Eq. 11.
+fn riverbank_floor(v: Vertex, le: f64) -> f64 {
+    return min(f64(v.ground) + le * p.riverbed_slope, f64(v.water) + p.riverbed_edge_height + le * p.near_river_slope);
+}
+
+// `least_steep`: the altitude whose steepest slope to the neighbours is least.
+fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
+    var best_k = -F64_MAX;
+    var best = f64(0.0);
+    for (var i = 0u; i < 4u; i++) {
+        for (var j = 0u; j < 4u; j++) {
+            if g[i] > g[j] {
+                let k = (g[i] - g[j]) / max(l[i] + l[j], F64_MIN_POSITIVE);
+                if k > best_k {
+                    best_k = k;
+                    best = g[i] - k * l[i];
+                }
+            }
+        }
+    }
+    return best;
+}
+
+// `continent_vertex`: midpoint displacement within eq. 11-12, or a new river arm (eq. 10).
+fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) -> Made {
+    var kinds = kinds_in;
+    let ends = array<u32, 4>(s.a, s.t, s.b, s.d);
+    var around: array<Vertex, 4>;
+    var lens: array<f64, 4>;
+    var grounds: array<f64, 4>;
+    let at_unit = normalize3(at);
+    for (var i = 0u; i < 4u; i++) {
+        around[i] = vertices[ends[i]];
+        lens[i] = distance3(at_unit, normalize3(triple(around[i].pos))) * p.radius;
+        grounds[i] = f64(around[i].ground);
+    }
+    let xi = unit(seed, SALT_ALTITUDE);
+    var bank_lo = p.sea_level + p.one;
+    var slope_lo = -F64_MAX;
+    var any_lo = -F64_MAX;
+    var hi = F64_MAX;
+    for (var i = 0u; i < 4u; i++) {
+        let v = around[i];
+        let le = lens[i];
+        let below = f64(v.ground) - le * p.ground_slope;
+        if is_wet(v) {
+            bank_lo = max(bank_lo, riverbank_floor(v, le));
+        } else {
+            slope_lo = max(slope_lo, below);
+        }
+        any_lo = max(any_lo, below);
+        hi = min(hi, f64(v.ground) + le * p.ground_slope);
+    }
+    let edge_len = distance3(pos(s.a), pos(s.b));
+
+    if edge_len >= p.min_river_length {
+        var cap = F64_MAX;
+        for (var i = 0u; i < 4u; i++) {
+            let v = around[i];
+            if !is_wet(v) {
+                let le = lens[i];
+                cap = min(cap, f64(v.ground) - min(le * p.riverbed_slope, p.riverbed_edge_height + le * p.near_river_slope));
+            }
+        }
+        var best = 4u;
+        var best_floor = f64(0.0);
+        for (var i = 0u; i < 4u; i++) {
+            if (vertex_flags(around[i]) & FLAG_RIVER) != 0u && lens[i] >= p.min_river_length {
+                let lowest = f64(around[i].water) + lens[i] * p.river_slope;
+                if lowest < cap && lowest < p.max_river_altitude && (best == 4u || lowest < best_floor) {
+                    best = i;
+                    best_floor = lowest;
+                }
+            }
+        }
+        if best < 4u {
+            let top = min(cap, p.max_river_altitude);
+            let g = best_floor + (top - best_floor) * unit(seed, SALT_RIVER) * p.half;
+            kinds[best] = KIND_RIVER;
+            var v = new_vertex(at, seed, g, g, FLAG_RIVER | FLAG_REFINED, 0u);
+            v.bits |= tangent_code(tangent_towards(triple(v.pos), triple(around[best].pos)));
+            return Made(v, kinds);
+        }
+    }
+
+    let mean = (((grounds[0] + grounds[1]) + grounds[2]) + grounds[3]) * p.quarter;
+    let wanted = mean + (xi - p.half) * land_roughness(edge_len);
+    let lo = max(bank_lo, slope_lo);
+    var g: f64;
+    if any_lo > hi {
+        g = least_steep(grounds, lens);
+    } else if lo <= hi {
+        g = clamp(wanted, lo, min(hi, max(p.max_mountain_altitude, lo)));
+    } else {
+        g = hi;
+    }
+    var surface = F32_MIN;
+    for (var i = 0u; i < 4u; i++) {
+        if is_wet(around[i]) {
+            surface = max(surface, around[i].water);
+        }
+    }
+    var water = g;
+    if f32(g) < surface {
+        water = f64(surface);
+    }
+    return Made(new_vertex(at, seed, g, water, FLAG_REFINED, 0u), kinds);
+}
+
+fn inner_kind(face_kind: u32) -> u32 {
+    if (face_kind & 0xffu) == FACE_SEA {
+        return KIND_SEA;
+    }
+    return KIND_CONTINENT;
+}
+
+// `Lod` of a half or inner edge from `q` to `r`: inside its parent's bounds.
+fn child_lod(parent: u32, q: vec3<f64>, r: vec3<f64>, parent_mid: vec3<f64>) -> u32 {
+    let own = distance3(q, r);
+    let offset = distance3((q + r) * p.half, parent_mid);
+    let len = f64(lod_len(parent));
+    let radius = f64(lod_radius(parent));
+    return lod_new(min(own, len), min(own, radius - offset));
+}
+
+// In edge `e`, the face slot holding `old` now holds `new_face`.
+fn relink(e: u32, old: u32, new_face: u32) {
+    if edges[e].f[0] == old {
+        edges[e].f[0] = new_face;
+    } else {
+        edges[e].f[1] = new_face;
+    }
+}
+
+@compute @workgroup_size(64)
+fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
+    let i = id.x + id.y * p.row;
+    if i >= p.count {
+        return;
+    }
+    let e1 = list[i];
+    let parent = edges[e1];
+    let old1 = faces[parent.f[0]];
+    let old2 = faces[parent.f[1]];
+    let s = Site(e1, parent.v[0], parent.v[1], old1.v[0], old2.v[0], parent.f[0], parent.f[1]);
+    let seed = vertices[s.a].seed + vertices[s.b].seed;
+    let kind = edge_kind(parent);
+    let at = split_position(s, seed, kind);
+    var made: Made;
+    let kinds = array<u32, 4>(kind, inner_kind(old1.kind), kind, inner_kind(old2.kind));
+    if kind == KIND_CONTINENT {
+        made = continent_vertex(s, seed, at, kinds);
+    } else {
+        made = Made(wet_vertex(s, seed, at, kind), kinds);
+    }
+
+    let m = p.vertices + i;
+    let e2 = p.edges + 3u * i;
+    let e3 = e2 + 1u;
+    let e4 = e2 + 2u;
+    let f3 = p.faces + 2u * i;
+    let f4 = f3 + 1u;
+    let level = edge_level(parent) + 1u;
+    let pa = pos(s.a);
+    let pb = pos(s.b);
+    let pm = triple(made.v.pos);
+    let parent_mid = (pa + pb) * p.half;
+    let t = s.t;
+    let d = s.d;
+    let a = s.a;
+    let b = s.b;
+    let f1 = s.f1;
+    let f2 = s.f2;
+
+    faces[f1] = Face(array<u32, 3>(m, t, a), array<u32, 3>(old1.e[2], e1, e2), old1.kind);
+    faces[f2] = Face(array<u32, 3>(m, a, d), array<u32, 3>(old2.e[1], e4, e1), old2.kind);
+    faces[f3] = Face(array<u32, 3>(m, b, t), array<u32, 3>(old1.e[1], e2, e3), old1.kind);
+    faces[f4] = Face(array<u32, 3>(m, d, b), array<u32, 3>(old2.e[2], e3, e4), old2.kind);
+    let k = made.kinds;
+    edges[e1] = Edge(array<u32, 2>(a, m), array<u32, 2>(f1, f2), child_lod(parent.lod, pa, pm, parent_mid), level | (k[0] << 16u));
+    edges[e2] = Edge(array<u32, 2>(m, t), array<u32, 2>(f1, f3), child_lod(parent.lod, pm, pos(t), parent_mid), level | (k[1] << 16u));
+    edges[e3] = Edge(array<u32, 2>(m, b), array<u32, 2>(f3, f4), child_lod(parent.lod, pm, pb, parent_mid), level | (k[2] << 16u));
+    edges[e4] = Edge(array<u32, 2>(m, d), array<u32, 2>(f4, f2), child_lod(parent.lod, pm, pos(d), parent_mid), level | (k[3] << 16u));
+    var v = made.v;
+    v.edge = e1;
+    v.parent_lod = parent.lod;
+    let flags = (1u << k[0]) | (1u << k[1]) | (1u << k[2]) | (1u << k[3]);
+    v.bits |= flags << 24u;
+    vertices[m] = v;
+    relink(old1.e[1], f1, f3);
+    relink(old2.e[2], f2, f4);
+    if vertices[b].edge == e1 {
+        vertices[b].edge = e3;
+    }
+}

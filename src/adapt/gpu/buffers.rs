@@ -1,0 +1,204 @@
+//! The mesh resident on the device (paper §5.2): the vertex, edge and face buffers in the
+//! `#[repr(C)]` layouts of `crate::mesh`, the per-edge scratch of the state update and the
+//! split list, and a small readback of counts and timestamps. Capacities grow with slack like
+//! the host buffers (`compact::N_ALLOC`), copying what the device holds, so passes and cameras
+//! reuse the same buffers and only counts cross the bus until the mesh is read back.
+
+use super::{GpuAdaption, GpuError};
+use crate::adapt::compact::N_ALLOC;
+use crate::mesh::{Edge, Face, Mesh, Vertex, EDGE_BYTES, FACE_BYTES, VERTEX_BYTES};
+use wgpu::BufferUsages as U;
+
+/// Number of timestamp pairs (one per stage: state, select, split).
+pub(super) const STAGES: usize = 3;
+/// Byte offset of the resolved timestamps in the readback buffer (after the two counts).
+pub(super) const STAMPS_AT: u64 = 8;
+
+/// The device copy of one adapter's mesh.
+pub struct DeviceMesh {
+    pub(super) vertices: wgpu::Buffer,
+    pub(super) edges: wgpu::Buffer,
+    pub(super) faces: wgpu::Buffer,
+    /// One `u32` per edge slot each: split wishes, chain flags, ready flags, the split list.
+    pub(super) wants: wgpu::Buffer,
+    pub(super) seen: wgpu::Buffer,
+    pub(super) ready: wgpu::Buffer,
+    pub(super) list: wgpu::Buffer,
+    /// Ready edges per block of the split-list compaction, then the blocks' offsets.
+    pub(super) sums: wgpu::Buffer,
+    /// `[ready edges, wanted edges]` of the last split-list compaction.
+    pub(super) counts: wgpu::Buffer,
+    /// Stage parameters (`GpuView`, `Grid`, `SplitParams`).
+    pub(super) view: wgpu::Buffer,
+    pub(super) grid: wgpu::Buffer,
+    pub(super) split: wgpu::Buffer,
+    /// Resolved timestamps, and the counts and timestamps mapped for reading.
+    pub(super) stamps: wgpu::Buffer,
+    pub(super) readback: wgpu::Buffer,
+    /// Live lengths of the vertex, edge and face buffers.
+    pub lens: (usize, usize, usize),
+}
+
+impl std::fmt::Debug for DeviceMesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "DeviceMesh({:?})", self.lens)
+    }
+}
+
+fn buffer(device: &wgpu::Device, label: &str, size: u64, usage: U) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: size.next_multiple_of(256).max(256),
+        usage,
+        mapped_at_creation: false,
+    })
+}
+
+const STORE: U = U::STORAGE.union(U::COPY_SRC).union(U::COPY_DST);
+
+/// Capacity for `n` entities: `n` plus the slack, scaled like the host buffers'.
+fn with_slack(n: usize, slack: usize) -> u64 {
+    (n + n / 4 + slack) as u64
+}
+
+impl DeviceMesh {
+    /// Device buffers holding `mesh`.
+    pub(super) fn upload(gpu: &GpuAdaption, mesh: &Mesh) -> Result<DeviceMesh, GpuError> {
+        let (nv, ne, nf) = (mesh.vertices.len(), mesh.edges.len(), mesh.faces.len());
+        let mut dm = DeviceMesh::with_capacity(gpu, nv, ne, nf)?;
+        gpu.queue.write_buffer(&dm.vertices, 0, bytemuck::cast_slice(&mesh.vertices));
+        gpu.queue.write_buffer(&dm.edges, 0, bytemuck::cast_slice(&mesh.edges));
+        gpu.queue.write_buffer(&dm.faces, 0, bytemuck::cast_slice(&mesh.faces));
+        dm.lens = (nv, ne, nf);
+        Ok(dm)
+    }
+
+    /// Buffers with room for `nv` vertices, `ne` edges and `nf` faces plus slack; empty.
+    fn with_capacity(gpu: &GpuAdaption, nv: usize, ne: usize, nf: usize) -> Result<DeviceMesh, GpuError> {
+        let device = &gpu.device;
+        let (cv, ce, cf) = (with_slack(nv, N_ALLOC / 2), with_slack(ne, N_ALLOC * 3 / 2), with_slack(nf, N_ALLOC));
+        let limit = device.limits().max_storage_buffer_binding_size;
+        for needed in [cv * VERTEX_BYTES as u64, ce * EDGE_BYTES as u64, cf * FACE_BYTES as u64] {
+            if needed > limit {
+                return Err(GpuError::TooLarge { needed, limit });
+            }
+        }
+        let flags = |label| buffer(device, label, 4 * ce, STORE);
+        Ok(DeviceMesh {
+            vertices: buffer(device, "vertices", cv * VERTEX_BYTES as u64, STORE),
+            edges: buffer(device, "edges", ce * EDGE_BYTES as u64, STORE),
+            faces: buffer(device, "faces", cf * FACE_BYTES as u64, STORE),
+            wants: flags("wants"),
+            seen: flags("chain flags"),
+            ready: flags("ready flags"),
+            list: flags("split list"),
+            sums: buffer(device, "block sums", 4 * ce.div_ceil(super::select::BLOCK as u64), STORE),
+            counts: buffer(device, "counts", 8, STORE),
+            view: buffer(device, "view", std::mem::size_of::<super::state::GpuView>() as u64, STORE),
+            grid: buffer(device, "grid", 16, U::UNIFORM | U::COPY_DST),
+            split: buffer(
+                device,
+                "split params",
+                std::mem::size_of::<super::split::SplitParams>() as u64,
+                U::UNIFORM | U::COPY_DST,
+            ),
+            stamps: buffer(
+                device,
+                "timestamps",
+                wgpu::QUERY_RESOLVE_BUFFER_ALIGNMENT * STAGES as u64,
+                U::QUERY_RESOLVE | U::COPY_SRC,
+            ),
+            readback: buffer(device, "readback", STAMPS_AT + 16 * STAGES as u64, U::MAP_READ | U::COPY_DST),
+            lens: (nv, ne, nf),
+        })
+    }
+
+    /// Capacity in vertices, edges and faces.
+    fn capacity(&self) -> (usize, usize, usize) {
+        (
+            self.vertices.size() as usize / VERTEX_BYTES,
+            self.edges.size() as usize / EDGE_BYTES,
+            self.faces.size() as usize / FACE_BYTES,
+        )
+    }
+
+    /// Makes room for `n` more splits (a vertex, three edges and two faces each), moving the
+    /// mesh into larger buffers on the device when it is short.
+    pub(super) fn reserve_splits(&mut self, gpu: &GpuAdaption, n: usize) -> Result<(), GpuError> {
+        let (nv, ne, nf) = self.lens;
+        let (cv, ce, cf) = self.capacity();
+        if nv + n <= cv && ne + 3 * n <= ce && nf + 2 * n <= cf {
+            return Ok(());
+        }
+        let bigger = DeviceMesh::with_capacity(gpu, nv + n, ne + 3 * n, nf + 2 * n)?;
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(&self.vertices, 0, &bigger.vertices, 0, (nv * VERTEX_BYTES) as u64);
+        encoder.copy_buffer_to_buffer(&self.edges, 0, &bigger.edges, 0, (ne * EDGE_BYTES) as u64);
+        encoder.copy_buffer_to_buffer(&self.faces, 0, &bigger.faces, 0, (nf * FACE_BYTES) as u64);
+        encoder.copy_buffer_to_buffer(&self.wants, 0, &bigger.wants, 0, 4 * ne as u64);
+        encoder.copy_buffer_to_buffer(&self.list, 0, &bigger.list, 0, 4 * ne as u64);
+        gpu.queue.submit([encoder.finish()]);
+        *self = DeviceMesh { lens: self.lens, ..bigger };
+        Ok(())
+    }
+
+    /// Reads the mesh back.
+    pub(super) fn download(&self, gpu: &GpuAdaption, radius: f64) -> Result<Mesh, GpuError> {
+        let (nv, ne, nf) = self.lens;
+        let vertex_bytes = read(gpu, &self.vertices, (nv * VERTEX_BYTES) as u64)?;
+        let edge_bytes = read(gpu, &self.edges, (ne * EDGE_BYTES) as u64)?;
+        let face_bytes = read(gpu, &self.faces, (nf * FACE_BYTES) as u64)?;
+        let bad = |what: &str| GpuError::Device(format!("the device returned an invalid {what}"));
+        let vertices: Vec<Vertex> = bytemuck::pod_collect_to_vec::<u32, Vertex>(&vertex_bytes);
+        let edges: Vec<Edge> =
+            bytemuck::checked::try_cast_slice::<u32, Edge>(&edge_bytes).map_err(|_| bad("edge"))?.to_vec();
+        let faces: Vec<Face> =
+            bytemuck::checked::try_cast_slice::<u32, Face>(&face_bytes).map_err(|_| bad("face"))?.to_vec();
+        Ok(Mesh { radius, vertices, edges, faces })
+    }
+
+    /// Reads the split wishes of the live edges back.
+    pub(super) fn download_wants(&self, gpu: &GpuAdaption) -> Result<Vec<bool>, GpuError> {
+        let words = read(gpu, &self.wants, 4 * self.lens.1 as u64)?;
+        Ok(words.iter().map(|&w| w != 0).collect())
+    }
+}
+
+/// The first `size` bytes of `buffer` (a multiple of four), as words, through a staging buffer.
+pub(super) fn read(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u32>, GpuError> {
+    if size == 0 {
+        return Ok(Vec::new());
+    }
+    let staging = buffer_exact(&gpu.device, "staging", size, U::MAP_READ | U::COPY_DST);
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    map_words(gpu, &staging, size)
+}
+
+fn buffer_exact(device: &wgpu::Device, label: &str, size: u64, usage: U) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: size.next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT),
+        usage,
+        mapped_at_creation: false,
+    })
+}
+
+/// Maps the first `size` bytes of a `MAP_READ` buffer (after the submitted work) as words.
+pub(super) fn map_words(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u32>, GpuError> {
+    let device_error = |e: &dyn std::fmt::Display| GpuError::Device(e.to_string());
+    let slice = buffer.slice(..size);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| device_error(&e))?;
+    rx.recv().map_err(|e| device_error(&e))?.map_err(|e| device_error(&e))?;
+    let words = {
+        let data = slice.get_mapped_range().map_err(|e| device_error(&e))?;
+        bytemuck::pod_collect_to_vec::<u8, u32>(&data)
+    };
+    buffer.unmap();
+    Ok(words)
+}
