@@ -34,6 +34,16 @@ struct Face {
     kind: u32,
 }
 
+// A vertex-wise dispatch of the collapse stages (`Sweep` of `src/adapt/gpu/collapse.rs`).
+struct Sweep {
+    vertices: u32,
+    // Invocations per row of the dispatch grid (vertex = x + y * row).
+    row: u32,
+    // 1: look only at vertices marked `MARK_LOOK` (the apexes the last collapses restored).
+    among: u32,
+    _pad: u32,
+}
+
 const NONE: u32 = 0xffffffffu;
 // An entity a collapse removed, until compaction (`mesh::split::DEAD`).
 const DEAD: u32 = 0xfffffffeu;
@@ -46,6 +56,11 @@ const FACE_SEA: u32 = 0u;
 
 const FLAG_RIVER: u32 = 8u;
 const FLAG_REFINED: u32 = 64u;
+
+// Per-vertex marks of the collapse stage: an apex a collapse restored (looked at next), and a
+// collapse candidate.
+const MARK_LOOK: u32 = 1u;
+const MARK_COLLAPSE: u32 = 2u;
 
 const F64_MAX: f64 = 1.7976931348623157e308lf;
 

@@ -59,11 +59,11 @@ fn kernel(d: &DeviceTimes) -> String {
     }
 }
 
-/// Device time per stage, `state / select / split` milliseconds.
+/// Device time per stage, `state / select / split / collapse / compact` milliseconds.
 fn stages(d: &DeviceTimes) -> String {
     if d.timed {
-        let [a, b, c] = d.stage_ms;
-        format!("{a:.1} / {b:.1} / {c:.1}")
+        let [a, b, c, e, f] = d.stage_ms;
+        format!("{a:.1} / {b:.1} / {c:.1} / {e:.1} / {f:.1}")
     } else {
         "n/a".into()
     }
@@ -84,11 +84,11 @@ pub fn run(spec: &PlanetSpec) {
     // Compile the pipeline and size the buffers outside the timings.
     let _ = gpu::edge_wants(&g, &planet.mesh, &View::new(&views[0].1, p.radius_m, p.min_edge_length_m));
     println!(
-        "Adaption from the base mesh ({} faces). On the device: state update, split-list compaction \
-         and splits; collapses and compaction on the CPU.\n",
+        "Adaption from the base mesh ({} faces). Every stage on the device: state update, split-list \
+         compaction, splits, collapses and compaction (spatial ordering on the host).\n",
         planet.stats.faces
     );
-    println!("| view | faces | same mesh | CPU adapt (ms) | GPU adapt (ms) | GPU device (ms) | device state / select / split (ms) | submissions | uploaded (MB) | read back (MB) |");
+    println!("| view | faces | same mesh | CPU adapt (ms) | GPU adapt (ms) | GPU device (ms) | device state / select / split / collapse / compact (ms) | submissions | uploaded (MB) | read back (MB) |");
     println!("|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut cases: Vec<(String, Vec<Camera>, Option<usize>)> =
         views.iter().map(|(n, c)| (n.to_string(), vec![c.clone()], None)).collect();

@@ -79,9 +79,9 @@ enum Command {
         /// Print adaption statistics as JSON.
         #[arg(long)]
         stats: bool,
-        /// Where adaption runs: cpu (rayon), gpu (wgpu compute: state update, split-list
-        /// compaction and splits; collapses on the CPU) or auto (the GPU when the adapter is a
-        /// real GPU with f64 in shaders, else the CPU). The choice is printed on stderr.
+        /// Where adaption runs: cpu (rayon), gpu (wgpu compute: every stage, the mesh kept on
+        /// the device) or auto (the GPU when the adapter is a real GPU with f64 in shaders, else
+        /// the CPU). The choice is printed on stderr.
         #[arg(long, default_value = "auto", value_parser = parse_backend)]
         backend: riverworld::adapt::gpu::Backend,
     },

@@ -321,8 +321,7 @@ impl Adapter {
     }
 
     /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit;
-    /// refine-only runs on the device when the adapter has one (`gpu/adapt.rs`, the same
-    /// passes).
+    /// on the device when the adapter has one (`gpu/adapt.rs`, the same passes).
     ///
     /// With the camera fixed, an edge's answer never changes, so the flags are computed once
     /// and then only for edges the splits touched; collapses are looked for in the first pass,
@@ -345,13 +344,15 @@ impl Adapter {
         stats: &mut AdaptStats,
     ) -> bool {
         #[cfg(feature = "gpu")]
-        if let (Some(g), true) = (self.gpu.clone(), refine_only) {
-            match self.refine_on_device(&g, view, cap, stats) {
+        if let Some(g) = self.gpu.clone() {
+            let before = (stats.clone(), self.ordered_faces);
+            match self.run_on_device(&g, view, cap, refine_only, stats) {
                 Ok(converged) => return converged,
                 Err(e) => {
-                    // The host mesh is still the one the run started from.
+                    // The host mesh is still the one the run started from: run it again here.
                     tracing::warn!("GPU adaption failed ({e}); continuing on the CPU");
                     self.gpu = None;
+                    (*stats, self.ordered_faces) = before;
                 }
             }
         }

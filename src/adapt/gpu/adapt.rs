@@ -1,17 +1,17 @@
-//! The refining adaption loop on the device (paper §5): the twin of `Adapter::run` for a
-//! refine-only run (a mesh that is a sub-refinement of the target's: the base mesh, or one
-//! converged for a coarser target), pass for pass, so both backends make the same splits in the
-//! same passes.
+//! The adaption loop on the device (paper §5): the twin of `Adapter::run_on_cpu`, pass for
+//! pass, so both backends make the same splits and collapses in the same passes.
 //!
-//! A pass records the splits of the current split list, the state update of the changed mesh
-//! and the next split list in one submission and reads back two counts; the mesh is read back
-//! once, at the end, and stays on the device (`Resident`) for the next run unless the host copy
-//! changes first. Runs that collapse stay on the CPU: with collapses on the host, each
-//! collapsing pass would move the whole mesh across the bus both ways (measured on an H100:
-//! a 30-frame fly-through took 56 s that way against 3.6 s on the CPU).
+//! A pass records its splits, the state update of the changed mesh, the split-list compaction
+//! (whose chain flags are the demanded edges), the collapse candidates and collapses, and the
+//! state update and split list of the coarsened mesh in one submission, and reads back four
+//! counts. Compaction runs on the device too, except in spatial order (a sort, rare: once the
+//! mesh appended more than it had ordered), which moves the mesh to the host and back. The mesh
+//! is read back once, at the end, and stays on the device (`Resident`) for the next run unless
+//! the host copy changes first.
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
+use crate::adapt::compact::{self, N_ALLOC};
 use crate::adapt::{lap, AdaptStats, Adapter, View, MAX_PASSES};
 use std::time::Instant;
 
@@ -27,13 +27,14 @@ impl Clone for Resident {
 }
 
 impl Adapter {
-    /// A refine-only [`Adapter::run`] with the state update, split-list compaction and splits
-    /// on `gpu`. On an error the host mesh is still the one the run started from.
-    pub(crate) fn refine_on_device(
+    /// [`Adapter::run`] with every stage on `gpu`. On an error the host mesh is still the one
+    /// the run started from.
+    pub(crate) fn run_on_device(
         &mut self,
         gpu: &GpuAdaption,
         view: &View,
         cap: Option<usize>,
+        refine_only: bool,
         stats: &mut AdaptStats,
     ) -> Result<bool, GpuError> {
         let mut t = Instant::now();
@@ -41,45 +42,114 @@ impl Adapter {
             Some(dm) => dm,
             None => upload(gpu, &self.mesh)?,
         };
-        let [mut ready, wanted] = decide(gpu, &dm, view)?;
+        let [mut ready, wanted, ..] = decide(gpu, &dm, view)?;
         lap(&mut t, &mut stats.stage_ms.state);
         let over = |faces: usize| cap.is_some_and(|c| faces > c);
-        if over(dm.lens.2 + 2 * wanted) {
+        if refine_only && over(dm.lens.2 + 2 * wanted) {
             self.resident.0 = Some(dm);
             return Ok(false);
         }
         let mut converged = false;
-        let mut made = 0;
+        let mut changed = false;
+        let mut dead_faces = 0;
+        let mut look_for_collapses = true;
+        // Whether candidates are looked for only among the apexes the last collapses marked.
+        let mut among_apexes = false;
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
-            if over(dm.lens.2) {
+            let over_cap = over(dm.lens.2 - dead_faces);
+            if refine_only && over_cap {
                 break;
             }
-            if ready == 0 {
+            let splits = if over_cap { 0 } else { ready };
+            let collapse_step = !refine_only && (look_for_collapses || splits == 0);
+            if splits == 0 && !collapse_step {
                 converged = true;
                 break;
             }
-            let splits = ready;
-            dm.reserve_splits(gpu, splits)?;
+            if splits > 0 {
+                dm.reserve_splits(gpu, splits)?;
+            }
             let mut sub = gpu.submission();
-            gpu.split.encode(gpu, &mut sub, &mut dm, &self.params, self.mesh.radius, splits);
-            gpu.state.encode(gpu, &mut sub, &dm, view);
+            if splits > 0 {
+                gpu.split.encode(gpu, &mut sub, &mut dm, &self.params, self.mesh.radius, splits);
+                gpu.state.encode(gpu, &mut sub, &dm, view);
+            }
             gpu.select.encode(gpu, &mut sub, &dm);
-            ready = sub.finish(gpu, &dm)?[0];
-            made += splits;
-            lap(&mut t, &mut stats.stage_ms.split);
+            if collapse_step {
+                gpu.collapse.encode(gpu, &mut sub, &dm, view, among_apexes, splits == 0 && among_apexes);
+                gpu.state.encode(gpu, &mut sub, &dm, view);
+                gpu.select.encode(gpu, &mut sub, &dm);
+            }
+            let counts = sub.finish(gpu, &dm)?;
+            ready = counts[0];
+            let collapses = if collapse_step { counts[2] + counts[3] } else { 0 };
+            lap(&mut t, if collapse_step { &mut stats.stage_ms.collapse } else { &mut stats.stage_ms.split });
+            among_apexes |= collapse_step;
+            if collapses > 0 {
+                dead_faces += 2 * collapses;
+                if dead_faces > N_ALLOC.max(dm.lens.2 / 4) {
+                    // As on the CPU: squeeze the holes out now, and decide every edge again.
+                    dm = self.compact_on_device(gpu, dm, dead_faces)?;
+                    dead_faces = 0;
+                    among_apexes = false;
+                    lap(&mut t, &mut stats.stage_ms.compact);
+                    ready = decide(gpu, &dm, view)?[0];
+                    lap(&mut t, &mut stats.stage_ms.state);
+                }
+            }
+            look_for_collapses = collapses > 0;
+            stats.splits += splits;
+            stats.collapses += collapses;
+            changed |= splits + collapses > 0;
+            if splits == 0 && collapses == 0 {
+                converged = !over_cap;
+                break;
+            }
+            if !over_cap && over(dm.lens.2 - dead_faces) {
+                look_for_collapses = true;
+                among_apexes = false;
+            }
         }
-        stats.splits += made;
-        if made > 0 {
+        if dead_faces > 0 {
+            dm = self.compact_on_device(gpu, dm, dead_faces)?;
+            lap(&mut t, &mut stats.stage_ms.compact);
+        }
+        if changed {
             self.mesh = download(gpu, &dm, self.mesh.radius)?;
         }
         self.resident.0 = Some(dm);
         Ok(converged)
     }
+
+    /// `dm` without the entities `dead_faces / 2` collapses removed, as [`Adapter::compact`]
+    /// leaves the host mesh: on the device keeping the order, or, when the mesh is
+    /// [`compact::scattered`], in spatial order on the host.
+    fn compact_on_device(
+        &mut self,
+        gpu: &GpuAdaption,
+        dm: DeviceMesh,
+        dead_faces: usize,
+    ) -> Result<DeviceMesh, GpuError> {
+        let (nv, ne, nf) = dm.lens;
+        let n = dead_faces / 2;
+        if compact::scattered(nf, self.ordered_faces) {
+            let mut mesh = download(gpu, &dm, self.mesh.radius)?;
+            compact::compact(&mut mesh, true);
+            self.ordered_faces = mesh.faces.len();
+            return upload(gpu, &mesh);
+        }
+        let live = (nv - n, ne - 3 * n, nf - 2 * n);
+        let mut sub = gpu.submission();
+        let out = gpu.compact.encode(gpu, &mut sub, &dm, live)?;
+        sub.finish(gpu, &out)?;
+        self.ordered_faces = self.ordered_faces.min(live.2);
+        Ok(out)
+    }
 }
 
 /// The state update and split-list compaction of `dm`'s mesh: `[ready edges, wanted edges]`.
-fn decide(gpu: &GpuAdaption, dm: &DeviceMesh, view: &View) -> Result<[usize; 2], GpuError> {
+fn decide(gpu: &GpuAdaption, dm: &DeviceMesh, view: &View) -> Result<[usize; 4], GpuError> {
     let mut sub = gpu.submission();
     gpu.state.encode(gpu, &mut sub, dm, view);
     gpu.select.encode(gpu, &mut sub, dm);

@@ -9,29 +9,33 @@ use crate::adapt::compact::N_ALLOC;
 use crate::mesh::{Edge, Face, Mesh, Vertex, EDGE_BYTES, FACE_BYTES, VERTEX_BYTES};
 use wgpu::BufferUsages as U;
 
-/// Number of timestamp pairs (one per stage: state, select, split).
-pub(super) const STAGES: usize = 3;
-/// Byte offset of the resolved timestamps in the readback buffer (after the two counts).
-pub(super) const STAMPS_AT: u64 = 8;
+/// Byte offset of the resolved timestamps in the readback buffer (after the four counts).
+pub(super) const STAMPS_AT: u64 = 16;
 
 /// The device copy of one adapter's mesh.
 pub struct DeviceMesh {
     pub(super) vertices: wgpu::Buffer,
     pub(super) edges: wgpu::Buffer,
     pub(super) faces: wgpu::Buffer,
-    /// One `u32` per edge slot each: split wishes, chain flags, ready flags, the split list.
+    /// One `u32` per edge slot each: split wishes, chain flags (the demanded edges of the
+    /// collapse candidates), ready flags, the split list.
     pub(super) wants: wgpu::Buffer,
     pub(super) seen: wgpu::Buffer,
     pub(super) ready: wgpu::Buffer,
     pub(super) list: wgpu::Buffer,
     /// Ready edges per block of the split-list compaction, then the blocks' offsets.
     pub(super) sums: wgpu::Buffer,
-    /// `[ready edges, wanted edges]` of the last split-list compaction.
+    /// One `u32` per vertex slot: collapse marks (`MARK_LOOK`, `MARK_COLLAPSE`). Slots past the
+    /// live vertices are zero: the buffer is fresh whenever the vertex count shrinks.
+    pub(super) marks: wgpu::Buffer,
+    /// `[ready edges, wanted edges]` of the last split-list compaction, then the collapse
+    /// candidates and those of a full look.
     pub(super) counts: wgpu::Buffer,
-    /// Stage parameters (`GpuView`, `Grid`, `SplitParams`).
+    /// Stage parameters (`GpuView`, `ScanGrid`, `SplitParams`, `Sweep`).
     pub(super) view: wgpu::Buffer,
     pub(super) grid: wgpu::Buffer,
     pub(super) split: wgpu::Buffer,
+    pub(super) sweep: wgpu::Buffer,
     /// Resolved timestamps, and the counts and timestamps mapped for reading.
     pub(super) stamps: wgpu::Buffer,
     pub(super) readback: wgpu::Buffer,
@@ -74,7 +78,7 @@ impl DeviceMesh {
     }
 
     /// Buffers with room for `nv` vertices, `ne` edges and `nf` faces plus slack; empty.
-    fn with_capacity(gpu: &GpuAdaption, nv: usize, ne: usize, nf: usize) -> Result<DeviceMesh, GpuError> {
+    pub(super) fn with_capacity(gpu: &GpuAdaption, nv: usize, ne: usize, nf: usize) -> Result<DeviceMesh, GpuError> {
         let device = &gpu.device;
         let (cv, ce, cf) = (with_slack(nv, N_ALLOC / 2), with_slack(ne, N_ALLOC * 3 / 2), with_slack(nf, N_ALLOC));
         let limit = device.limits().max_storage_buffer_binding_size;
@@ -92,8 +96,9 @@ impl DeviceMesh {
             seen: flags("chain flags"),
             ready: flags("ready flags"),
             list: flags("split list"),
-            sums: buffer(device, "block sums", 4 * ce.div_ceil(super::select::BLOCK as u64), STORE),
-            counts: buffer(device, "counts", 8, STORE),
+            sums: buffer(device, "block sums", 4 * ce.div_ceil(super::BLOCK as u64), STORE),
+            marks: buffer(device, "collapse marks", 4 * cv, STORE),
+            counts: buffer(device, "counts", STAMPS_AT, STORE),
             view: buffer(device, "view", std::mem::size_of::<super::state::GpuView>() as u64, STORE),
             grid: buffer(device, "grid", 16, U::UNIFORM | U::COPY_DST),
             split: buffer(
@@ -102,19 +107,20 @@ impl DeviceMesh {
                 std::mem::size_of::<super::split::SplitParams>() as u64,
                 U::UNIFORM | U::COPY_DST,
             ),
-            stamps: buffer(
+            sweep: buffer(device, "sweep", 16, U::UNIFORM | U::COPY_DST),
+            stamps: buffer(device, "timestamps", 16 * super::TIMED_PASSES as u64, U::QUERY_RESOLVE | U::COPY_SRC),
+            readback: buffer(
                 device,
-                "timestamps",
-                wgpu::QUERY_RESOLVE_BUFFER_ALIGNMENT * STAGES as u64,
-                U::QUERY_RESOLVE | U::COPY_SRC,
+                "readback",
+                STAMPS_AT + 16 * super::TIMED_PASSES as u64,
+                U::MAP_READ | U::COPY_DST,
             ),
-            readback: buffer(device, "readback", STAMPS_AT + 16 * STAGES as u64, U::MAP_READ | U::COPY_DST),
             lens: (nv, ne, nf),
         })
     }
 
     /// Capacity in vertices, edges and faces.
-    fn capacity(&self) -> (usize, usize, usize) {
+    pub(super) fn capacity(&self) -> (usize, usize, usize) {
         (
             self.vertices.size() as usize / VERTEX_BYTES,
             self.edges.size() as usize / EDGE_BYTES,
@@ -123,7 +129,8 @@ impl DeviceMesh {
     }
 
     /// Makes room for `n` more splits (a vertex, three edges and two faces each), moving the
-    /// mesh into larger buffers on the device when it is short.
+    /// mesh, the split list and the collapse marks into larger buffers on the device when it is
+    /// short (split wishes and chain flags are decided again after the splits).
     pub(super) fn reserve_splits(&mut self, gpu: &GpuAdaption, n: usize) -> Result<(), GpuError> {
         let (nv, ne, nf) = self.lens;
         let (cv, ce, cf) = self.capacity();
@@ -135,8 +142,8 @@ impl DeviceMesh {
         encoder.copy_buffer_to_buffer(&self.vertices, 0, &bigger.vertices, 0, (nv * VERTEX_BYTES) as u64);
         encoder.copy_buffer_to_buffer(&self.edges, 0, &bigger.edges, 0, (ne * EDGE_BYTES) as u64);
         encoder.copy_buffer_to_buffer(&self.faces, 0, &bigger.faces, 0, (nf * FACE_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.wants, 0, &bigger.wants, 0, 4 * ne as u64);
         encoder.copy_buffer_to_buffer(&self.list, 0, &bigger.list, 0, 4 * ne as u64);
+        encoder.copy_buffer_to_buffer(&self.marks, 0, &bigger.marks, 0, 4 * nv as u64);
         gpu.queue.submit([encoder.finish()]);
         *self = DeviceMesh { lens: self.lens, ..bigger };
         Ok(())

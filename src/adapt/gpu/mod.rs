@@ -3,12 +3,12 @@
 //! `#[repr(C)]` layouts of `crate::mesh` (`Vertex`, `Edge`, `Face`, spelt out once for the
 //! shaders in `shaders/adapt_mesh.wgsl`) through bytemuck.
 //!
-//! On the device: the state update (`state.rs`), split-list compaction with its prefix sums
-//! (`select.rs`) and the edge splits with their terrain (`split.rs`), on a mesh that stays
-//! resident between passes and runs (`buffers.rs`); a pass reads back two counts. Refining runs
-//! (views from the base mesh, the face budget's finer trials) run there (`adapt.rs`); vertex
-//! collapses and buffer compaction are not on the device yet, so runs that coarsen stay on the
-//! CPU.
+//! On the device: the state update with its collapse candidates (`state.rs`), split-list
+//! compaction with its prefix sums (`select.rs`), the edge splits with their terrain
+//! (`split.rs`), vertex collapses (`collapse.rs`) and buffer compaction (`compact.rs`), on a
+//! mesh that stays resident between passes and runs (`buffers.rs`); a pass reads back four
+//! counts, the mesh is read back once at the end of a run (`adapt.rs`). The one step left to the
+//! host is the occasional compaction in spatial order (a sort), which moves the mesh both ways.
 //!
 //! Precision: the shaders compute in `f64` (wgpu's `SHADER_F64`), on the mesh's own
 //! planet-centred `f64` positions, with the operations of the CPU code in the same order, so a
@@ -19,6 +19,8 @@
 
 mod adapt;
 mod buffers;
+mod collapse;
+mod compact;
 mod select;
 mod split;
 mod state;
@@ -73,18 +75,55 @@ pub struct GpuAdaption {
     state: state::StatePipeline,
     select: select::SelectPipeline,
     split: split::SplitPipeline,
-    /// A begin and an end timestamp per [`Stage`], where the device has timestamp queries.
+    collapse: collapse::CollapsePipeline,
+    compact: compact::CompactPipeline,
+    /// A begin and an end timestamp for each of the first [`TIMED_PASSES`] compute passes of a
+    /// submission, where the device has timestamp queries.
     stamps: Option<wgpu::QuerySet>,
     /// What the submissions since the last [`GpuAdaption::take_times`] cost.
     times: std::sync::Mutex<DeviceTimes>,
 }
 
-/// The stages that run on the device, in timestamp order.
+/// The stages that run on the device (`DeviceTimes::stage_ms` order).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Stage {
     State = 0,
     Select = 1,
     Split = 2,
+    Collapse = 3,
+    Compact = 4,
+}
+
+/// Compute passes of one submission that get timestamps (a pass records at most eight).
+const TIMED_PASSES: usize = 16;
+
+/// The shape of a block prefix sum as `adapt_scan.wgsl` reads it (`struct Grid`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub(crate) struct ScanGrid {
+    /// Items to scan.
+    pub items: u32,
+    /// Invocations per row of an item-wise dispatch of `WORKGROUP` (item = x + y * row).
+    pub row: u32,
+    /// Blocks of `BLOCK` items, and workgroups per row of the block-wise dispatch.
+    pub blocks: u32,
+    pub block_row: u32,
+}
+
+/// Items per block of the prefix sums (`BLOCK` in `adapt_scan.wgsl`).
+pub(crate) const BLOCK: u32 = 1024;
+/// Workgroup size of the item-wise stages.
+pub(crate) const WORKGROUP: u32 = 256;
+
+impl ScanGrid {
+    /// Item-wise and block-wise dispatch shapes for `items` items: the grid and the workgroups
+    /// `(x, y)` of each.
+    pub(crate) fn new(device: &wgpu::Device, items: u32) -> (ScanGrid, (u32, u32), (u32, u32)) {
+        let (gx, gy, row) = dispatch_grid(device, items.max(1), WORKGROUP);
+        let blocks = items.div_ceil(BLOCK).max(1);
+        let (bx, by, block_row) = dispatch_grid(device, blocks, 1);
+        (ScanGrid { items, row, blocks, block_row }, (gx, gy), (bx, by))
+    }
 }
 
 /// What device work cost (`riverworld bench --only adapt`): summed over submissions.
@@ -96,8 +135,9 @@ pub struct DeviceTimes {
     pub wall_ms: f64,
     /// Device time of the compute passes from timestamp queries, milliseconds (0 if untimed).
     pub kernel_ms: f64,
-    /// The same per stage: state update, split-list compaction, splits.
-    pub stage_ms: [f64; 3],
+    /// The same per stage: state update (with collapse candidates), split-list compaction,
+    /// splits, collapses, buffer compaction.
+    pub stage_ms: [f64; 5],
     /// Whether the adapter has timestamp queries (`kernel_ms` is measured).
     pub timed: bool,
     /// Bytes written to the device.
@@ -139,10 +179,10 @@ impl GpuAdaption {
             return Err(GpuError::NoF64(format!("{} ({:?})", info.name, info.backend)));
         }
         let limits = adapter.limits();
-        // The split-list compaction binds six storage buffers.
-        if limits.max_storage_buffers_per_shader_stage < 6 {
+        // The collapse candidates bind seven storage buffers.
+        if limits.max_storage_buffers_per_shader_stage < 7 {
             return Err(GpuError::Device(format!(
-                "{} ({:?}) allows {} storage buffers per shader stage; adaption needs 6",
+                "{} ({:?}) allows {} storage buffers per shader stage; adaption needs 7",
                 info.name, info.backend, limits.max_storage_buffers_per_shader_stage
             )));
         }
@@ -168,17 +208,30 @@ impl GpuAdaption {
             device.create_query_set(&wgpu::QuerySetDescriptor {
                 label: Some("adaption stage timestamps"),
                 ty: wgpu::QueryType::Timestamp,
-                count: 2 * buffers::STAGES as u32,
+                count: 2 * TIMED_PASSES as u32,
             })
         });
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let state = state::StatePipeline::new(&device);
         let select = select::SelectPipeline::new(&device);
         let split = split::SplitPipeline::new(&device);
+        let collapse = collapse::CollapsePipeline::new(&device);
+        let compact = compact::CompactPipeline::new(&device);
         if let Some(e) = futures::executor::block_on(scope.pop()) {
             return Err(GpuError::Device(format!("{} ({:?}): {e}", info.name, info.backend)));
         }
-        Ok(GpuAdaption { device, queue, info, state, select, split, stamps, times: Default::default() })
+        Ok(GpuAdaption {
+            device,
+            queue,
+            info,
+            state,
+            select,
+            split,
+            collapse,
+            compact,
+            stamps,
+            times: Default::default(),
+        })
     }
 
     /// The adapter, in words.
@@ -271,9 +324,13 @@ pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u
     (gx, groups.div_ceil(gx), gx * size)
 }
 
-/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own source.
-fn shader(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
-    let full = format!("{}\n{}", include_str!("../../../shaders/adapt_mesh.wgsl"), source);
+/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own sources.
+fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> wgpu::ShaderModule {
+    let mut full = include_str!("../../../shaders/adapt_mesh.wgsl").to_string();
+    for source in sources {
+        full.push('\n');
+        full.push_str(source);
+    }
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
         source: wgpu::ShaderSource::Wgsl(full.into()),
@@ -309,8 +366,8 @@ pub(crate) struct Submission {
     oom: wgpu::ErrorScopeGuard,
     validation: wgpu::ErrorScopeGuard,
     start: Instant,
-    /// Stages whose timestamps this submission writes (bit per [`Stage`]).
-    stages: std::cell::Cell<u8>,
+    /// The stage of each compute pass recorded so far.
+    stages: Vec<Stage>,
 }
 
 impl GpuAdaption {
@@ -319,59 +376,55 @@ impl GpuAdaption {
         let oom = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("adaption") });
-        Submission { encoder, oom, validation, start: Instant::now(), stages: Default::default() }
+        Submission { encoder, oom, validation, start: Instant::now(), stages: Vec::new() }
     }
 }
 
 impl Submission {
     /// A compute pass of `stage`, timed where the device has timestamp queries.
     fn pass<'e>(&'e mut self, gpu: &'e GpuAdaption, stage: Stage) -> wgpu::ComputePass<'e> {
-        let s = stage as u32;
-        self.stages.set(self.stages.get() | 1 << s);
-        let timestamp_writes = gpu.stamps.as_ref().map(|q| wgpu::ComputePassTimestampWrites {
-            query_set: q,
-            beginning_of_pass_write_index: Some(2 * s),
-            end_of_pass_write_index: Some(2 * s + 1),
-        });
+        let n = self.stages.len() as u32;
+        self.stages.push(stage);
+        let timestamp_writes =
+            gpu.stamps.as_ref().filter(|_| n < TIMED_PASSES as u32).map(|q| wgpu::ComputePassTimestampWrites {
+                query_set: q,
+                beginning_of_pass_write_index: Some(2 * n),
+                end_of_pass_write_index: Some(2 * n + 1),
+            });
         self.encoder
             .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("adaption stage"), timestamp_writes })
     }
 
     /// Submits, waits, and returns `dm.counts` (`[ready edges, wanted edges]` of the last
-    /// split-list compaction); device errors raised by the recorded work are returned.
-    pub(crate) fn finish(self, gpu: &GpuAdaption, dm: &DeviceMesh) -> Result<[usize; 2], GpuError> {
+    /// split-list compaction, collapse candidates and those of a full look); device errors
+    /// raised by the recorded work are returned.
+    pub(crate) fn finish(self, gpu: &GpuAdaption, dm: &DeviceMesh) -> Result<[usize; 4], GpuError> {
         let Submission { mut encoder, oom, validation, start, stages } = self;
-        let stages = stages.get();
-        encoder.copy_buffer_to_buffer(&dm.counts, 0, &dm.readback, 0, 8);
-        if let Some(q) = &gpu.stamps {
-            for s in 0..buffers::STAGES as u32 {
-                if stages & 1 << s != 0 {
-                    let at = wgpu::QUERY_RESOLVE_BUFFER_ALIGNMENT * s as u64;
-                    encoder.resolve_query_set(q, 2 * s..2 * s + 2, &dm.stamps, at);
-                    encoder.copy_buffer_to_buffer(&dm.stamps, at, &dm.readback, buffers::STAMPS_AT + 16 * s as u64, 16);
-                }
-            }
+        let timed = stages.len().min(TIMED_PASSES);
+        encoder.copy_buffer_to_buffer(&dm.counts, 0, &dm.readback, 0, buffers::STAMPS_AT);
+        if let (Some(q), true) = (&gpu.stamps, timed > 0) {
+            encoder.resolve_query_set(q, 0..2 * timed as u32, &dm.stamps, 0);
+            encoder.copy_buffer_to_buffer(&dm.stamps, 0, &dm.readback, buffers::STAMPS_AT, 16 * timed as u64);
         }
         gpu.queue.submit([encoder.finish()]);
         let invalid = futures::executor::block_on(validation.pop());
         if let Some(e) = futures::executor::block_on(oom.pop()).or(invalid) {
             return Err(GpuError::Device(e.to_string()));
         }
-        let words = buffers::map_words(gpu, &dm.readback, buffers::STAMPS_AT + 16 * buffers::STAGES as u64)?;
+        let words = buffers::map_words(gpu, &dm.readback, buffers::STAMPS_AT + 16 * timed as u64)?;
         let mut t = DeviceTimes { dispatches: 1, timed: gpu.stamps.is_some(), ..Default::default() };
         if gpu.stamps.is_some() {
             let period = gpu.queue.get_timestamp_period() as f64;
-            for s in 0..buffers::STAGES {
-                if stages & 1 << s != 0 {
-                    let tick = |i: usize| words[2 + 2 * i] as u64 | (words[3 + 2 * i] as u64) << 32;
-                    t.stage_ms[s] = tick(2 * s + 1).saturating_sub(tick(2 * s)) as f64 * period / 1e6;
-                }
+            let at = buffers::STAMPS_AT as usize / 4;
+            let tick = |i: usize| words[at + 2 * i] as u64 | (words[at + 2 * i + 1] as u64) << 32;
+            for (n, stage) in stages.iter().take(timed).enumerate() {
+                t.stage_ms[*stage as usize] += tick(2 * n + 1).saturating_sub(tick(2 * n)) as f64 * period / 1e6;
             }
             t.kernel_ms = t.stage_ms.iter().sum();
         }
         t.wall_ms = start.elapsed().as_secs_f64() * 1000.0;
         gpu.record(t);
-        Ok([words[0] as usize, words[1] as usize])
+        Ok([0, 1, 2, 3].map(|i| words[i] as usize))
     }
 }
 

@@ -1,25 +1,12 @@
 //! Split-list compaction on the device (paper §5.3, Algorithm 2 steps 1–2):
 //! `shaders/adapt_select.wgsl`, the twin of [`crate::adapt::split::select_splits`]. Chains of
 //! blocking edges are walked with an atomic flag per edge; the ready edges are compacted into
-//! a list in edge order by a prefix sum over blocks, so the list is the CPU's.
+//! a list in edge order by a prefix sum over blocks (`shaders/adapt_scan.wgsl`), so the list
+//! is the CPU's. The chain flags left in `seen` are the demanded edges of
+//! [`crate::adapt::state::demanded`], which the collapse candidates read.
 
 use super::buffers::DeviceMesh;
-use super::{dispatch_grid, GpuAdaption, Stage, Submission};
-use bytemuck::{Pod, Zeroable};
-
-/// Edges per block of the prefix sum (`BLOCK` in the shader).
-pub(super) const BLOCK: u32 = 1024;
-const WORKGROUP: u32 = 256;
-
-/// The dispatch shape as `adapt_select.wgsl` reads it (`struct Grid`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct Grid {
-    edges: u32,
-    row: u32,
-    blocks: u32,
-    block_row: u32,
-}
+use super::{GpuAdaption, ScanGrid, Stage, Submission};
 
 pub(super) struct SelectPipeline {
     walk: wgpu::ComputePipeline,
@@ -30,7 +17,11 @@ pub(super) struct SelectPipeline {
 
 impl SelectPipeline {
     pub(super) fn new(device: &wgpu::Device) -> SelectPipeline {
-        let module = super::shader(device, "adapt_select.wgsl", include_str!("../../../shaders/adapt_select.wgsl"));
+        let module = super::shader(
+            device,
+            "adapt_select.wgsl",
+            &[include_str!("../../../shaders/adapt_select.wgsl"), include_str!("../../../shaders/adapt_scan.wgsl")],
+        );
         SelectPipeline {
             walk: super::pipeline(device, &module, "walk_chains"),
             block_sums: super::pipeline(device, &module, "block_sums"),
@@ -44,10 +35,7 @@ impl SelectPipeline {
     pub(super) fn encode(&self, gpu: &GpuAdaption, sub: &mut Submission, dm: &DeviceMesh) {
         let n = dm.lens.1 as u32;
         let device = &gpu.device;
-        let (gx, gy, row) = dispatch_grid(device, n.max(1), WORKGROUP);
-        let blocks = n.div_ceil(BLOCK).max(1);
-        let (bx, by, brow) = dispatch_grid(device, blocks, 1);
-        let grid = Grid { edges: n, row, blocks, block_row: brow };
+        let (grid, (gx, gy), (bx, by)) = ScanGrid::new(device, n);
         gpu.queue.write_buffer(&dm.grid, 0, bytemuck::bytes_of(&grid));
         let flags = 4 * n.max(1) as u64;
         sub.encoder.clear_buffer(&dm.seen, 0, Some(flags.next_multiple_of(4)));

@@ -88,7 +88,7 @@ pub(super) struct SplitPipeline {
 
 impl SplitPipeline {
     pub(super) fn new(device: &wgpu::Device) -> SplitPipeline {
-        let module = super::shader(device, "adapt_split.wgsl", include_str!("../../../shaders/adapt_split.wgsl"));
+        let module = super::shader(device, "adapt_split.wgsl", &[include_str!("../../../shaders/adapt_split.wgsl")]);
         SplitPipeline { pipeline: super::pipeline(device, &module, "split_edges") }
     }
 

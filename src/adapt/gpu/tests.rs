@@ -219,3 +219,22 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
+    // Enough collapses in one run that the holes are squeezed out mid-run (more than
+    // `N_ALLOC` dead faces), then decided again, on both backends.
+    let cams = [ground(20.0, 10.0, 50.0, 500.0, 1.0), ground(-30.0, 120.0, 2e7, 3e7, 4.0)];
+    let mut cpu = Adapter::new(planet().mesh.clone(), Params::default());
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    for (i, cam) in cams.iter().enumerate() {
+        let a = cpu.adapt(cam, Some(250_000));
+        let b = dev.adapt(cam, Some(250_000));
+        assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
+        assert_eq!((a.splits, a.collapses, a.passes), (b.splits, b.collapses, b.passes), "camera {i}");
+        if i == 1 {
+            assert!(2 * a.collapses > crate::adapt::compact::N_ALLOC, "only {} collapses", a.collapses);
+        }
+        assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
+    }
+}
