@@ -130,8 +130,31 @@ impl Adapter {
 
     /// Replaces the mesh (the device copy, if any, no longer matches) and returns the old one.
     fn replace_mesh(&mut self, mesh: Mesh) -> Mesh {
+        self.sync_host();
         self.forget_device_mesh();
         std::mem::replace(&mut self.mesh, mesh)
+    }
+
+    /// Replaces the mesh, dropping the old one (and its device copy, unread).
+    fn set_mesh(&mut self, mesh: Mesh) {
+        self.forget_device_mesh();
+        self.mesh = mesh;
+    }
+
+    /// Faces of the current mesh (slots, dead ones included), wherever it is.
+    fn face_count(&self) -> usize {
+        #[cfg(feature = "gpu")]
+        if let Some(n) = self.device_faces() {
+            return n;
+        }
+        self.mesh.faces.len()
+    }
+
+    /// Brings the host mesh up to date where a run on the device left it behind (the GPU
+    /// backend reads a mesh back only when it is going to be used).
+    fn sync_host(&mut self) {
+        #[cfg(feature = "gpu")]
+        self.read_back_mesh();
     }
 
     /// Drops the device copy of the mesh, after the host copy changed.
@@ -195,6 +218,7 @@ impl Adapter {
             }
             Some(max) => self.fit_budget(cam, max, &mut stats),
         };
+        self.sync_host();
         self.fresh = false;
         stats.lod_scale = BUDGET_STEP.powi(step);
         stats.faces = self.mesh.faces.len();
@@ -251,7 +275,7 @@ impl Adapter {
                 (false, max + 1)
             } else {
                 if !first {
-                    self.replace_mesh(match &fits {
+                    self.set_mesh(match &fits {
                         Some((_, m)) => m.clone(),
                         None => self.base.clone(),
                     });
@@ -260,7 +284,7 @@ impl Adapter {
                 // both are sub-refinements of this target's mesh, so they only refine.
                 let refine_only = !first || self.fresh;
                 let converged = self.run(&view, Some(max), refine_only, wishes, stats);
-                (converged, self.mesh.faces.len())
+                (converged, self.face_count())
             };
             first = false;
             if converged && faces <= max {
@@ -277,7 +301,7 @@ impl Adapter {
                     break;
                 }
                 if fits.as_ref().is_some_and(|(hi, _)| *hi == over + 1) {
-                    self.replace_mesh(fits.take().expect("a fitting mesh").1);
+                    self.set_mesh(fits.take().expect("a fitting mesh").1);
                     k = over + 1;
                     break;
                 }
@@ -343,6 +367,7 @@ impl Adapter {
         wishes: Option<Vec<bool>>,
         stats: &mut AdaptStats,
     ) -> bool {
+        self.sync_host();
         #[cfg(feature = "gpu")]
         if let Some(g) = self.gpu.clone() {
             let before = (stats.clone(), self.ordered_faces);

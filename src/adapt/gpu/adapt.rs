@@ -15,14 +15,18 @@ use crate::adapt::compact::{self, N_ALLOC};
 use crate::adapt::{lap, AdaptStats, Adapter, View, MAX_PASSES};
 use std::time::Instant;
 
-/// The device copy of an adapter's mesh, when it equals the host copy. Cloning an adapter does
-/// not share it (the clone uploads its own).
+/// The device copy of an adapter's mesh: equal to the host copy, or, with `ahead`, the newer
+/// one (a run's result not read back yet). Between calls of `Adapter::adapt` it is never ahead,
+/// so cloning an adapter, which does not share it (the clone uploads its own), loses nothing.
 #[derive(Debug, Default)]
-pub struct Resident(pub(crate) Option<DeviceMesh>);
+pub struct Resident {
+    pub(crate) mesh: Option<DeviceMesh>,
+    pub(crate) ahead: bool,
+}
 
 impl Clone for Resident {
     fn clone(&self) -> Resident {
-        Resident(None)
+        Resident::default()
     }
 }
 
@@ -38,7 +42,7 @@ impl Adapter {
         stats: &mut AdaptStats,
     ) -> Result<bool, GpuError> {
         let mut t = Instant::now();
-        let mut dm = match self.resident.0.take() {
+        let mut dm = match self.resident.mesh.take() {
             Some(dm) => dm,
             None => upload(gpu, &self.mesh)?,
         };
@@ -46,7 +50,7 @@ impl Adapter {
         lap(&mut t, &mut stats.stage_ms.state);
         let over = |faces: usize| cap.is_some_and(|c| faces > c);
         if refine_only && over(dm.lens.2 + 2 * wanted) {
-            self.resident.0 = Some(dm);
+            self.resident.mesh = Some(dm);
             return Ok(false);
         }
         let mut converged = false;
@@ -115,11 +119,38 @@ impl Adapter {
             dm = self.compact_on_device(gpu, dm, dead_faces)?;
             lap(&mut t, &mut stats.stage_ms.compact);
         }
-        if changed {
+        // A result over the face cap is usually thrown away (the budget search goes coarser):
+        // it is read back only if the caller keeps it (`Adapter::read_back_mesh`).
+        let wanted = cap.is_none_or(|c| converged && dm.lens.2 <= c);
+        if changed && wanted {
             self.mesh = download(gpu, &dm, self.mesh.radius)?;
         }
-        self.resident.0 = Some(dm);
+        self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
         Ok(converged)
+    }
+
+    /// Faces of the device copy when it is ahead of the host mesh.
+    pub(crate) fn device_faces(&self) -> Option<usize> {
+        self.resident.mesh.as_ref().filter(|_| self.resident.ahead).map(|dm| dm.lens.2)
+    }
+
+    /// Reads the device copy back when it is ahead of the host mesh. A device failure here
+    /// leaves the older host mesh and the CPU backend, and says so.
+    pub(crate) fn read_back_mesh(&mut self) {
+        let (Some(gpu), Some(dm), true) = (&self.gpu, &self.resident.mesh, self.resident.ahead) else {
+            return;
+        };
+        match download(gpu, dm, self.mesh.radius) {
+            Ok(mesh) => {
+                self.mesh = mesh;
+                self.resident.ahead = false;
+            }
+            Err(e) => {
+                tracing::warn!("reading the adapted mesh back failed ({e}); continuing on the CPU");
+                self.gpu = None;
+                self.resident = Resident::default();
+            }
+        }
     }
 
     /// `dm` without the entities `dead_faces / 2` collapses removed, as [`Adapter::compact`]
