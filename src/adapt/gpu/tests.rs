@@ -238,3 +238,32 @@ fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }
 }
+
+#[test]
+fn device_compaction_equals_host_compaction() {
+    // A refined mesh with holes: every vertex a far camera lets collapse, collapsed once.
+    let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+    a.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), Some(60_000));
+    let mut mesh = a.mesh().clone();
+    let far = view(&ground(-40.0, -100.0, 1e7, 2e7, 4.0));
+    let wants = state::edge_wants(&mesh, &far);
+    let sites = state::collapse_candidates(&mesh, &far, &state::demanded(&mesh, &wants), None);
+    assert!(sites.len() > 1000, "only {} collapses", sites.len());
+    mesh.collapse_vertices(&sites);
+    let n = sites.len();
+    let (nv, ne, nf) = (mesh.vertices.len(), mesh.edges.len(), mesh.faces.len());
+
+    let g = gpu();
+    let dm = DeviceMesh::upload(&g, &mesh).unwrap();
+    let mut sub = g.submission();
+    let out = g.compact.encode(&g, &mut sub, &dm, (nv - n, ne - 3 * n, nf - 2 * n)).unwrap();
+    sub.finish(&g, &out).unwrap();
+    let dev = out.download(&g, mesh.radius).unwrap();
+    mesh.compact();
+    assert_eq!(mesh.faces.len(), nf - 2 * n);
+    // Compaction moves entities and renumbers references; nothing is computed, so bit for bit
+    // on every adapter.
+    assert_eq!(bytemuck::cast_slice::<_, u8>(&mesh.vertices), bytemuck::cast_slice::<_, u8>(&dev.vertices));
+    assert_eq!(mesh.edges, dev.edges);
+    assert_eq!(mesh.faces, dev.faces);
+}
