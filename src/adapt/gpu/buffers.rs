@@ -149,19 +149,33 @@ impl DeviceMesh {
         Ok(())
     }
 
-    /// Reads the mesh back.
+    /// Reads the mesh back: the three buffers copied into one staging buffer, one wait, and
+    /// each mapped range turned into its typed vector with a single copy.
     pub(super) fn download(&self, gpu: &GpuAdaption, radius: f64) -> Result<Mesh, GpuError> {
         let (nv, ne, nf) = self.lens;
-        let vertex_bytes = read(gpu, &self.vertices, (nv * VERTEX_BYTES) as u64)?;
-        let edge_bytes = read(gpu, &self.edges, (ne * EDGE_BYTES) as u64)?;
-        let face_bytes = read(gpu, &self.faces, (nf * FACE_BYTES) as u64)?;
-        let bad = |what: &str| GpuError::Device(format!("the device returned an invalid {what}"));
-        let vertices: Vec<Vertex> = bytemuck::pod_collect_to_vec::<u32, Vertex>(&vertex_bytes);
-        let edges: Vec<Edge> =
-            bytemuck::checked::try_cast_slice::<u32, Edge>(&edge_bytes).map_err(|_| bad("edge"))?.to_vec();
-        let faces: Vec<Face> =
-            bytemuck::checked::try_cast_slice::<u32, Face>(&face_bytes).map_err(|_| bad("face"))?.to_vec();
-        Ok(Mesh { radius, vertices, edges, faces })
+        let sizes = [nv * VERTEX_BYTES, ne * EDGE_BYTES, nf * FACE_BYTES].map(|n| n as u64);
+        let total: u64 = sizes.iter().sum();
+        if total == 0 {
+            return Ok(Mesh { radius, ..Mesh::default() });
+        }
+        let staging = buffer_exact(&gpu.device, "staging", total, U::MAP_READ | U::COPY_DST);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        let mut at = 0;
+        for (buffer, size) in [&self.vertices, &self.edges, &self.faces].into_iter().zip(sizes) {
+            encoder.copy_buffer_to_buffer(buffer, 0, &staging, at, size);
+            at += size;
+        }
+        gpu.queue.submit([encoder.finish()]);
+        map_with(gpu, &staging, total, |data| {
+            let (vertex_bytes, rest) = data.split_at(sizes[0] as usize);
+            let (edge_bytes, face_bytes) = rest.split_at(sizes[1] as usize);
+            Ok(Mesh {
+                radius,
+                vertices: bytemuck::pod_collect_to_vec::<u8, Vertex>(vertex_bytes),
+                edges: checked_vec::<Edge>(edge_bytes, "edge")?,
+                faces: checked_vec::<Face>(face_bytes, "face")?,
+            })
+        })?
     }
 
     /// Reads the split wishes of the live edges back.
@@ -194,6 +208,12 @@ fn buffer_exact(device: &wgpu::Device, label: &str, size: u64, usage: U) -> wgpu
 
 /// Maps the first `size` bytes of a `MAP_READ` buffer (after the submitted work) as words.
 pub(super) fn map_words(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u32>, GpuError> {
+    map_with(gpu, buffer, size, bytemuck::pod_collect_to_vec::<u8, u32>)
+}
+
+/// Maps the first `size` bytes of a `MAP_READ` buffer (after the submitted work) and hands them
+/// to `f`.
+fn map_with<R>(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64, f: impl FnOnce(&[u8]) -> R) -> Result<R, GpuError> {
     let device_error = |e: &dyn std::fmt::Display| GpuError::Device(e.to_string());
     let slice = buffer.slice(..size);
     let (tx, rx) = std::sync::mpsc::channel();
@@ -202,10 +222,26 @@ pub(super) fn map_words(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> 
     });
     gpu.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| device_error(&e))?;
     rx.recv().map_err(|e| device_error(&e))?.map_err(|e| device_error(&e))?;
-    let words = {
+    let out = {
         let data = slice.get_mapped_range().map_err(|e| device_error(&e))?;
-        bytemuck::pod_collect_to_vec::<u8, u32>(&data)
+        f(&data)
     };
     buffer.unmap();
-    Ok(words)
+    Ok(out)
+}
+
+/// `bytes` as entities of a type with invalid bit patterns (an enum field), each checked: cast
+/// in place where the mapping is aligned for `T`, else through an aligned copy.
+fn checked_vec<T: bytemuck::CheckedBitPattern + Copy>(bytes: &[u8], what: &str) -> Result<Vec<T>, GpuError> {
+    use bytemuck::checked::{try_cast_slice, CheckedCastError};
+    use bytemuck::PodCastError;
+    let bad = || GpuError::Device(format!("the device returned an invalid {what}"));
+    match try_cast_slice::<u8, T>(bytes) {
+        Ok(items) => Ok(items.to_vec()),
+        Err(CheckedCastError::PodCastError(PodCastError::TargetAlignmentGreaterAndInputNotAligned)) => {
+            let words = bytemuck::pod_collect_to_vec::<u8, u32>(bytes);
+            Ok(try_cast_slice::<u32, T>(&words).map_err(|_| bad())?.to_vec())
+        }
+        Err(_) => Err(bad()),
+    }
 }
