@@ -4,13 +4,18 @@
 // its vertex, four edges and four faces, disjoint from every other candidate's; what neighbours
 // share is an outer edge, of which each collapse relinks only its own face's slot, and a corner
 // vertex, whose edge link only the owner of the linked edge moves. The restored faces' newest
-// vertices get `MARK_LOOK`: only they can have become collapsible. Layouts: `adapt_mesh.wgsl`.
+// vertices get `MARK_LOOK`: only they can have become collapsible. Split wishes are brought up
+// to date as by `update_after_collapses` (`src/adapt/state.rs`): the removed edges want nothing
+// and the restored edge is decided by the criterion of `adapt_view.wgsl` (appended). Layouts:
+// `adapt_mesh.wgsl` (prepended).
 
 @group(0) @binding(0) var<storage, read_write> vertices: array<Vertex>;
 @group(0) @binding(1) var<storage, read_write> edges: array<Edge>;
 @group(0) @binding(2) var<storage, read_write> faces: array<Face>;
 @group(0) @binding(3) var<storage, read_write> marks: array<atomic<u32>>;
 @group(0) @binding(4) var<uniform> sweep: Sweep;
+@group(0) @binding(5) var<storage, read> view: View;
+@group(0) @binding(6) var<storage, read_write> wants: array<u32>;
 
 // In edge `e`, replaces face `old` by `new_face` (the other slot may be a neighbour's).
 fn relink(e: u32, old: u32, new_face: u32) {
@@ -78,6 +83,12 @@ fn collapse_vertices(@builtin(global_invocation_id) id: vec3<u32>) {
     edges[e4].v = array<u32, 2>(DEAD, DEAD);
     faces[f3].v = array<u32, 3>(DEAD, DEAD, DEAD);
     faces[f4].v = array<u32, 3>(DEAD, DEAD, DEAD);
+    let centre = (position(a) + position(b)) * f64(0.5);
+    let lod = vertices[m].parent_lod;
+    wants[e1] = select(0u, 1u, wants_split(f64(lod_len(lod)), centre, f64(lod_radius(lod)), kind == KIND_SEA));
+    wants[e2] = 0u;
+    wants[e3] = 0u;
+    wants[e4] = 0u;
     atomicOr(&marks[t], MARK_LOOK);
     atomicOr(&marks[d], MARK_LOOK);
 }

@@ -2,9 +2,9 @@
 //! pass, so both backends make the same splits and collapses in the same passes.
 //!
 //! A pass records its splits, the state update of the changed mesh, the split-list compaction
-//! (whose chain flags are the demanded edges), the collapse candidates and collapses, and the
-//! state update and split list of the coarsened mesh in one submission, and reads back four
-//! counts. Compaction runs on the device too, except in spatial order (a sort, rare: once the
+//! (whose chain flags are the demanded edges), the collapse candidates and collapses (which
+//! decide the edges they restore), and the split list of the coarsened mesh in one submission,
+//! and reads back four counts. Compaction runs on the device too, except in spatial order (a sort, rare: once the
 //! mesh appended more than it had ordered), which moves the mesh to the host and back. The mesh
 //! is read back once, at the end, and stays on the device (`Resident`) for the next run unless
 //! the host copy changes first.
@@ -82,7 +82,6 @@ impl Adapter {
             gpu.select.encode(gpu, &mut sub, &dm);
             if collapse_step {
                 gpu.collapse.encode(gpu, &mut sub, &dm, view, among_apexes, splits == 0 && among_apexes);
-                gpu.state.encode(gpu, &mut sub, &dm, view);
                 gpu.select.encode(gpu, &mut sub, &dm);
             }
             let counts = sub.finish(gpu, &dm)?;

@@ -39,16 +39,19 @@ pub(super) struct CollapsePipeline {
 
 impl CollapsePipeline {
     pub(super) fn new(device: &wgpu::Device) -> CollapsePipeline {
-        let module =
-            super::shader(device, "adapt_collapse.wgsl", &[include_str!("../../../shaders/adapt_collapse.wgsl")]);
+        let module = super::shader(
+            device,
+            "adapt_collapse.wgsl",
+            &[include_str!("../../../shaders/adapt_collapse.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
+        );
         CollapsePipeline { pipeline: super::pipeline(device, &module, "collapse_vertices") }
     }
 
     /// Records a collapse step: the candidates of `dm` for `view` (among the vertices the last
     /// step marked, with `among`; with `full_look`, every vertex when those give none), then
-    /// their collapses, which leave the removed entities marked dead and mark the restored
-    /// faces' apexes for the next step. The split wishes and split list are stale afterwards
-    /// (the caller records the state update and split-list compaction again).
+    /// their collapses, which leave the removed entities marked dead, decide the restored edges'
+    /// split wishes and mark the restored faces' apexes for the next step. The split list is
+    /// stale afterwards (the caller records the split-list compaction again).
     pub(super) fn encode(
         &self,
         gpu: &GpuAdaption,
@@ -64,7 +67,15 @@ impl CollapsePipeline {
         let bind = super::bind(
             &gpu.device,
             &self.pipeline,
-            &[(0, &dm.vertices), (1, &dm.edges), (2, &dm.faces), (3, &dm.marks), (4, &dm.sweep)],
+            &[
+                (0, &dm.vertices),
+                (1, &dm.edges),
+                (2, &dm.faces),
+                (3, &dm.marks),
+                (4, &dm.sweep),
+                (5, &dm.view),
+                (6, &dm.wants),
+            ],
         );
         let (gx, gy) = sweep.workgroups(&gpu.device);
         let mut pass = sub.pass(gpu, Stage::Collapse);

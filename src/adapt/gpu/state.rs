@@ -55,7 +55,11 @@ pub(super) struct StatePipeline {
 
 impl StatePipeline {
     pub(super) fn new(device: &wgpu::Device) -> StatePipeline {
-        let module = super::shader(device, "adapt_state.wgsl", &[include_str!("../../../shaders/adapt_state.wgsl")]);
+        let module = super::shader(
+            device,
+            "adapt_state.wgsl",
+            &[include_str!("../../../shaders/adapt_state.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
+        );
         StatePipeline {
             pipeline: super::pipeline(device, &module, "edge_wants"),
             candidates: super::pipeline(device, &module, "collapse_candidates"),
@@ -65,7 +69,7 @@ impl StatePipeline {
 
     /// Writes `view` for `dm`'s edges (the same bytes for every stage of a submission, since
     /// queue writes land before it runs) and returns the edge-wise workgroups.
-    fn write_view(gpu: &GpuAdaption, dm: &DeviceMesh, view: &View) -> (u32, u32) {
+    pub(super) fn write_view(gpu: &GpuAdaption, dm: &DeviceMesh, view: &View) -> (u32, u32) {
         let n = dm.lens.1 as u32;
         let (gx, gy, row) = dispatch_grid(&gpu.device, n.max(1), WORKGROUP);
         gpu.queue.write_buffer(&dm.view, 0, bytemuck::bytes_of(&GpuView::new(view, n, row)));
