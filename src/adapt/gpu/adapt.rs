@@ -4,10 +4,10 @@
 //! A pass records its splits, the state update of the changed mesh, the split-list compaction
 //! (whose chain flags are the demanded edges), the collapse candidates and collapses (which
 //! decide the edges they restore), and the split list of the coarsened mesh in one submission,
-//! and reads back four counts. Compaction runs on the device too, except in spatial order (a sort, rare: once the
-//! mesh appended more than it had ordered), which moves the mesh to the host and back. The mesh
-//! is read back once, at the end, and stays on the device (`Resident`) for the next run unless
-//! the host copy changes first.
+//! and reads back four counts. Compaction runs on the device too, except in spatial order (a
+//! sort, rare: once the mesh appended more than it had ordered), which moves the mesh to the
+//! host and back. The mesh is read back once, at the end, and stays on the device (`Resident`)
+//! for the next run unless the host copy changes first.
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
@@ -93,7 +93,7 @@ impl Adapter {
                 dead_faces += 2 * collapses;
                 if dead_faces > N_ALLOC.max(dm.lens.2 / 4) {
                     // As on the CPU: squeeze the holes out now, and decide every edge again.
-                    dm = self.compact_on_device(gpu, dm, dead_faces)?;
+                    dm = self.compact_on_device(gpu, dm, dead_faces)?.0;
                     dead_faces = 0;
                     among_apexes = false;
                     lap(&mut t, &mut stats.stage_ms.compact);
@@ -114,15 +114,20 @@ impl Adapter {
                 among_apexes = false;
             }
         }
+        // The final mesh, when a compaction through the host already holds it there.
+        let mut on_host = None;
         if dead_faces > 0 {
-            dm = self.compact_on_device(gpu, dm, dead_faces)?;
+            (dm, on_host) = self.compact_on_device(gpu, dm, dead_faces)?;
             lap(&mut t, &mut stats.stage_ms.compact);
         }
         // A result over the face cap is usually thrown away (the budget search goes coarser):
         // it is read back only if the caller keeps it (`Adapter::read_back_mesh`).
         let wanted = cap.is_none_or(|c| converged && dm.lens.2 <= c);
         if changed && wanted {
-            self.mesh = download(gpu, &dm, self.mesh.radius)?;
+            self.mesh = match on_host {
+                Some(mesh) => mesh,
+                None => download(gpu, &dm, self.mesh.radius)?,
+            };
         }
         self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
         Ok(converged)
@@ -154,31 +159,32 @@ impl Adapter {
 
     /// `dm` without the entities `dead_faces / 2` collapses removed, as [`Adapter::compact`]
     /// leaves the host mesh: on the device keeping the order, or, when the mesh is
-    /// [`compact::scattered`], in spatial order on the host.
+    /// [`compact::scattered`], in spatial order on the host, whose copy is returned too.
     fn compact_on_device(
         &mut self,
         gpu: &GpuAdaption,
         dm: DeviceMesh,
         dead_faces: usize,
-    ) -> Result<DeviceMesh, GpuError> {
+    ) -> Result<(DeviceMesh, Option<crate::mesh::Mesh>), GpuError> {
         let (nv, ne, nf) = dm.lens;
         let n = dead_faces / 2;
         if compact::scattered(nf, self.ordered_faces) {
             let mut mesh = download(gpu, &dm, self.mesh.radius)?;
             compact::compact(&mut mesh, true);
             self.ordered_faces = mesh.faces.len();
-            return upload(gpu, &mesh);
+            return Ok((upload(gpu, &mesh)?, Some(mesh)));
         }
         let live = (nv - n, ne - 3 * n, nf - 2 * n);
         let mut sub = gpu.submission();
         let out = gpu.compact.encode(gpu, &mut sub, &dm, live)?;
         sub.finish(gpu, &out)?;
         self.ordered_faces = self.ordered_faces.min(live.2);
-        Ok(out)
+        Ok((out, None))
     }
 }
 
-/// The state update and split-list compaction of `dm`'s mesh: `[ready edges, wanted edges]`.
+/// The state update and split-list compaction of `dm`'s mesh: the counts of `dm.counts`
+/// (`[ready edges, wanted edges, ..]`).
 fn decide(gpu: &GpuAdaption, dm: &DeviceMesh, view: &View) -> Result<[usize; 4], GpuError> {
     let mut sub = gpu.submission();
     gpu.state.encode(gpu, &mut sub, dm, view);
