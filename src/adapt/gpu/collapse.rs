@@ -38,13 +38,13 @@ pub(super) struct CollapsePipeline {
 }
 
 impl CollapsePipeline {
-    pub(super) fn new(device: &wgpu::Device) -> CollapsePipeline {
+    pub(super) fn new(device: &wgpu::Device) -> Result<CollapsePipeline, super::GpuError> {
         let module = super::shader(
             device,
             "adapt_collapse.wgsl",
             &[include_str!("../../../shaders/adapt_collapse.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
-        );
-        CollapsePipeline { pipeline: super::pipeline(device, &module, "collapse_vertices") }
+        )?;
+        Ok(CollapsePipeline { pipeline: super::pipeline(device, &module, "collapse_vertices") })
     }
 
     /// Records a collapse step: the candidates of `dm` for `view` (among the vertices the last

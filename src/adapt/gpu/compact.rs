@@ -15,20 +15,20 @@ pub(super) struct CompactPipeline {
 }
 
 impl CompactPipeline {
-    pub(super) fn new(device: &wgpu::Device) -> CompactPipeline {
+    pub(super) fn new(device: &wgpu::Device) -> Result<CompactPipeline, super::GpuError> {
         let module = super::shader(
             device,
             "adapt_compact.wgsl",
             &[include_str!("../../../shaders/adapt_compact.wgsl"), include_str!("../../../shaders/adapt_scan.wgsl")],
-        );
+        )?;
         let p = |entry| super::pipeline(device, &module, entry);
-        CompactPipeline {
+        Ok(CompactPipeline {
             live: [p("live_vertices"), p("live_edges"), p("live_faces")],
             block_sums: p("block_sums"),
             scan_sums: p("scan_sums"),
             number: p("number"),
             moves: [p("move_vertices"), p("move_edges"), p("move_faces")],
-        }
+        })
     }
 
     /// Records the compaction of `dm` into fresh buffers holding `live` vertices, edges and

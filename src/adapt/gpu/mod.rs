@@ -13,15 +13,18 @@
 //! Precision: the shaders compute in `f64` (wgpu's `SHADER_F64`), on the mesh's own
 //! planet-centred `f64` positions, with the operations of the CPU code in the same order, so a
 //! decision is the CPU's: bit for bit where the device rounds `f64` arithmetic and `sqrt`
-//! correctly without fusing multiply-adds (lavapipe, tested); elsewhere a decision can differ
-//! only for an edge within about 1e-15 (relative) of its threshold. Adapters without `f64`
-//! (e.g. Metal) are refused: `auto` stays on the CPU there.
+//! correctly (lavapipe, tested). Fused multiply-adds are forbidden on Vulkan, where the shaders
+//! go to the driver as SPIR-V whose float operations are decorated `NoContraction`
+//! (`spirv.rs`); on other backends a compiler may fuse, and a decision can then differ only for
+//! an edge within about 1e-15 (relative) of its threshold. Adapters without `f64` (e.g. Metal)
+//! are refused: `auto` stays on the CPU there.
 
 mod adapt;
 mod buffers;
 mod collapse;
 mod compact;
 mod select;
+mod spirv;
 mod split;
 mod state;
 
@@ -191,6 +194,10 @@ impl GpuAdaption {
         if timestamps {
             required_features |= wgpu::Features::TIMESTAMP_QUERY;
         }
+        // SPIR-V without fused multiply-adds (`spirv.rs`), where the driver takes SPIR-V.
+        if info.backend == wgpu::Backend::Vulkan && adapter.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
+            required_features |= wgpu::Features::PASSTHROUGH_SHADERS;
+        }
         let (device, queue) = futures::executor::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("riverworld adaption"),
             required_features,
@@ -212,11 +219,11 @@ impl GpuAdaption {
             })
         });
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let state = state::StatePipeline::new(&device);
-        let select = select::SelectPipeline::new(&device);
-        let split = split::SplitPipeline::new(&device);
-        let collapse = collapse::CollapsePipeline::new(&device);
-        let compact = compact::CompactPipeline::new(&device);
+        let state = state::StatePipeline::new(&device)?;
+        let select = select::SelectPipeline::new(&device)?;
+        let split = split::SplitPipeline::new(&device)?;
+        let collapse = collapse::CollapsePipeline::new(&device)?;
+        let compact = compact::CompactPipeline::new(&device)?;
         if let Some(e) = futures::executor::block_on(scope.pop()) {
             return Err(GpuError::Device(format!("{} ({:?}): {e}", info.name, info.backend)));
         }
@@ -236,7 +243,13 @@ impl GpuAdaption {
 
     /// The adapter, in words.
     pub fn describe(&self) -> String {
-        format!("{} ({:?}, {:?})", self.info.name, self.info.backend, self.info.device_type)
+        let shaders = if self.exact_arithmetic() { "SPIR-V without contraction" } else { "WGSL" };
+        format!("{} ({:?}, {:?}, {shaders})", self.info.name, self.info.backend, self.info.device_type)
+    }
+
+    /// Whether the shaders reach the driver with fused multiply-adds forbidden (`spirv.rs`).
+    pub fn exact_arithmetic(&self) -> bool {
+        self.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)
     }
 
     /// The device work since the last call, and starts counting again.
@@ -324,24 +337,73 @@ pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u
     (gx, groups.div_ceil(gx), gx * size)
 }
 
-/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own sources.
-fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> wgpu::ShaderModule {
+/// `shaders/adapt_mesh.wgsl` followed by `sources`.
+fn stage_source(sources: &[&str]) -> String {
     let mut full = include_str!("../../../shaders/adapt_mesh.wgsl").to_string();
     for source in sources {
         full.push('\n');
         full.push_str(source);
     }
-    device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(label),
-        source: wgpu::ShaderSource::Wgsl(full.into()),
-    })
+    full
 }
 
-/// The compute pipeline of `entry` in `module`, its bind group layout derived from the shader.
-fn pipeline(device: &wgpu::Device, module: &wgpu::ShaderModule, entry: &str) -> wgpu::ComputePipeline {
+/// A stage's shader: a WGSL module, or SPIR-V passed through, one module per entry point with
+/// the bind group layout wgpu cannot derive from it.
+enum Shader {
+    Wgsl(wgpu::ShaderModule),
+    SpirV(Vec<(spirv::Entry, wgpu::ShaderModule)>),
+}
+
+/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own sources; SPIR-V
+/// without contraction where the device takes it (`spirv.rs`), else WGSL.
+fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> Result<Shader, GpuError> {
+    let full = stage_source(sources);
+    if device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
+        let entries = spirv::compile(&full).map_err(|e| GpuError::Device(format!("{label}: {e}")))?;
+        let modules = entries
+            .into_iter()
+            .map(|entry| {
+                // SAFETY: the words are naga's own SPIR-V for a WGSL module naga validated, with
+                // decorations added in the annotation section only
+                // (`spirv::forbid_contraction`); the pipeline binds the layout derived from the
+                // same module.
+                let module = unsafe { device.create_shader_module_passthrough(entry.descriptor(label)) };
+                (entry, module)
+            })
+            .collect();
+        return Ok(Shader::SpirV(modules));
+    }
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(full.into()),
+    });
+    Ok(Shader::Wgsl(module))
+}
+
+/// The compute pipeline of `entry` in `shader`, its bind group layout derived from the shader.
+fn pipeline(device: &wgpu::Device, shader: &Shader, entry: &str) -> wgpu::ComputePipeline {
+    let (module, layout) = match shader {
+        Shader::Wgsl(module) => (module, None),
+        Shader::SpirV(modules) => {
+            let (compiled, module) = modules
+                .iter()
+                .find(|(e, _)| e.name == entry)
+                .unwrap_or_else(|| panic!("no entry point {entry} in the stage's shader"));
+            let group = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(entry),
+                entries: &compiled.bindings,
+            });
+            let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(entry),
+                bind_group_layouts: &[Some(&group)],
+                immediate_size: 0,
+            });
+            (module, Some(layout))
+        }
+    };
     device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(entry),
-        layout: None,
+        layout: layout.as_ref(),
         module,
         entry_point: Some(entry),
         compilation_options: Default::default(),

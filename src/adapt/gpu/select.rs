@@ -16,18 +16,18 @@ pub(super) struct SelectPipeline {
 }
 
 impl SelectPipeline {
-    pub(super) fn new(device: &wgpu::Device) -> SelectPipeline {
+    pub(super) fn new(device: &wgpu::Device) -> Result<SelectPipeline, super::GpuError> {
         let module = super::shader(
             device,
             "adapt_select.wgsl",
             &[include_str!("../../../shaders/adapt_select.wgsl"), include_str!("../../../shaders/adapt_scan.wgsl")],
-        );
-        SelectPipeline {
+        )?;
+        Ok(SelectPipeline {
             walk: super::pipeline(device, &module, "walk_chains"),
             block_sums: super::pipeline(device, &module, "block_sums"),
             scan_sums: super::pipeline(device, &module, "scan_sums"),
             scatter: super::pipeline(device, &module, "scatter"),
-        }
+        })
     }
 
     /// Records the compaction of the ready edges of the wanted chains into `dm.list`, their

@@ -87,9 +87,9 @@ pub(super) struct SplitPipeline {
 }
 
 impl SplitPipeline {
-    pub(super) fn new(device: &wgpu::Device) -> SplitPipeline {
-        let module = super::shader(device, "adapt_split.wgsl", &[include_str!("../../../shaders/adapt_split.wgsl")]);
-        SplitPipeline { pipeline: super::pipeline(device, &module, "split_edges") }
+    pub(super) fn new(device: &wgpu::Device) -> Result<SplitPipeline, super::GpuError> {
+        let module = super::shader(device, "adapt_split.wgsl", &[include_str!("../../../shaders/adapt_split.wgsl")])?;
+        Ok(SplitPipeline { pipeline: super::pipeline(device, &module, "split_edges") })
     }
 
     /// Records the splits of the first `count` edges of `dm.list` (room reserved) and counts

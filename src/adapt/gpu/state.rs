@@ -54,17 +54,17 @@ pub(super) struct StatePipeline {
 }
 
 impl StatePipeline {
-    pub(super) fn new(device: &wgpu::Device) -> StatePipeline {
+    pub(super) fn new(device: &wgpu::Device) -> Result<StatePipeline, super::GpuError> {
         let module = super::shader(
             device,
             "adapt_state.wgsl",
             &[include_str!("../../../shaders/adapt_state.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
-        );
-        StatePipeline {
+        )?;
+        Ok(StatePipeline {
             pipeline: super::pipeline(device, &module, "edge_wants"),
             candidates: super::pipeline(device, &module, "collapse_candidates"),
             if_none: super::pipeline(device, &module, "candidates_if_none"),
-        }
+        })
     }
 
     /// Writes `view` for `dm`'s edges (the same bytes for every stage of a submission, since

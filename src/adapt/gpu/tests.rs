@@ -52,11 +52,11 @@ fn same_wants(mesh: &Mesh, cam: &Camera) {
 }
 
 /// Asserts that two meshes are equal, naming the first entity that differs and how: bit for bit
-/// on a CPU adapter (lavapipe rounds like the CPU); on a GPU, whose compiler may fuse multiply-adds
-/// (WGSL cannot forbid it), the same topology and kinds with positions within 1 µm and altitudes
-/// within 1 mm.
+/// on a CPU adapter (lavapipe rounds like the CPU) and wherever the shaders forbid fused
+/// multiply-adds (SPIR-V on Vulkan); elsewhere (WGSL, whose compilers may fuse), the same
+/// topology and kinds with positions within 1 µm and altitudes within 1 mm.
 fn assert_same_mesh(cpu: &Mesh, dev: &Mesh, what: &str) {
-    let exact = gpu().is_cpu();
+    let exact = gpu().is_cpu() || gpu().exact_arithmetic();
     let sizes = |m: &Mesh| (m.vertices.len(), m.edges.len(), m.faces.len());
     assert_eq!(sizes(cpu), sizes(dev), "{what}: vertex, edge and face counts");
     let differ = |name: &str, n: usize, same: &dyn Fn(usize) -> bool, show: &dyn Fn(usize) -> String| {
@@ -100,6 +100,14 @@ fn ground(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
     let eye = dir * (R + sea + height);
     let target = (dir + north * (ahead / R)).normalize() * (R + sea);
     Camera::new(eye, target, None, 60.0, 640, 360, px, px * 5.0, R).unwrap()
+}
+
+#[test]
+fn vulkan_runs_the_shaders_without_fused_multiply_adds() {
+    let g = gpu();
+    if g.info.backend == wgpu::Backend::Vulkan {
+        assert!(g.exact_arithmetic(), "{}: shaders passed as WGSL, which lets the driver fuse", g.describe());
+    }
 }
 
 #[test]
