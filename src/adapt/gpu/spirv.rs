@@ -26,6 +26,11 @@ const ANNOTATIONS: [u32; 8] = [71, 72, 73, 74, 75, 332, 5632, 5633];
 const TYPES: std::ops::RangeInclusive<u32> = 19..=39;
 /// Words of the SPIR-V header.
 const HEADER: usize = 5;
+/// The workgroup variables the shaders may declare: each invocation writes its own element of
+/// the scan's `part` (`shaders/adapt_scan.wgsl`) before the barrier that precedes any read, so
+/// the modules skip WGSL's zero-fill of workgroup memory (naga's polyfill, one invocation
+/// storing the whole array behind a barrier, tripled the split-list compaction on lavapipe).
+const WRITTEN_BEFORE_READ: [&str; 1] = ["part"];
 
 /// An entry point of a compiled stage: its own SPIR-V module (one entry point each, as wgpu
 /// compiles them) and the bind group 0 it uses.
@@ -43,6 +48,16 @@ pub(crate) fn compile(source: &str) -> Result<Vec<Entry>, String> {
     let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::FLOAT64)
         .validate(&module)
         .map_err(|e| e.emit_to_string(source))?;
+    let unchecked = module.global_variables.iter().find(|(_, var)| {
+        var.space == naga::AddressSpace::WorkGroup
+            && !WRITTEN_BEFORE_READ.contains(&var.name.as_deref().unwrap_or_default())
+    });
+    if let Some((_, var)) = unchecked {
+        return Err(format!(
+            "workgroup variable {:?} is not known to be written before it is read (zero-fill is skipped)",
+            var.name
+        ));
+    }
     module
         .entry_points
         .iter()
@@ -106,7 +121,7 @@ fn options(bindings: &[wgpu::BindGroupLayoutEntry]) -> naga::back::spv::Options<
             image_load: naga::proc::BoundsCheckPolicy::Restrict,
             binding_array: naga::proc::BoundsCheckPolicy::Unchecked,
         },
-        zero_initialize_workgroup_memory: naga::back::spv::ZeroInitializeWorkgroupMemoryMode::Polyfill,
+        zero_initialize_workgroup_memory: naga::back::spv::ZeroInitializeWorkgroupMemoryMode::None,
         ..Default::default()
     }
 }
@@ -250,5 +265,10 @@ mod tests {
         let mut empty = vec![0x0723_0203, 0x0001_0000, 0, 1, 0];
         assert!(forbid_contraction(&mut empty).is_err());
         assert!(compile("fn broken( {").is_err());
+        let reads_unwritten = "var<workgroup> total: atomic<u32>;\n\
+            @compute @workgroup_size(64) fn count() { atomicAdd(&total, 1u); }";
+        let refused = compile(reads_unwritten).err().unwrap();
+        assert!(refused.contains("\"total\""), "{refused}");
+        assert!(compile(&reads_unwritten.replace("total", "part")).is_ok());
     }
 }
