@@ -13,7 +13,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// whoever reached it first, so chains that merge cost their shared part once. Returns, sorted
 /// and without repeats, every edge on a chain (`all`) or only the chain ends, which are ready.
 pub fn wanted_chains(mesh: &Mesh, wants: &[bool], all: bool) -> Vec<u32> {
-    let wanted: Vec<u32> = (0..wants.len() as u32).into_par_iter().filter(|&e| wants[e as usize]).collect();
+    let wanted = set_flags(wants);
     let seen: Vec<AtomicBool> = (0..mesh.edges.len()).into_par_iter().map(|_| AtomicBool::new(false)).collect();
     let mut list: Vec<u32> = wanted
         .par_iter()
@@ -38,6 +38,27 @@ pub fn wanted_chains(mesh: &Mesh, wants: &[bool], all: bool) -> Vec<u32> {
     list
 }
 
+/// Indices of the set flags, in order. Most flags are clear after the first passes, so blocks
+/// of them are tested with one branchless OR before their set ones are looked for.
+pub fn set_flags(flags: &[bool]) -> Vec<u32> {
+    const CHUNK: usize = 1 << 15;
+    const BLOCK: usize = 64;
+    flags
+        .par_chunks(CHUNK)
+        .enumerate()
+        .flat_map_iter(|(c, chunk)| {
+            let mut found = Vec::new();
+            for (b, block) in chunk.chunks(BLOCK).enumerate() {
+                if block.iter().fold(false, |any, &f| any | f) {
+                    let base = (c * CHUNK + b * BLOCK) as u32;
+                    found.extend(block.iter().enumerate().filter(|(_, &f)| f).map(|(k, _)| base + k as u32));
+                }
+            }
+            found
+        })
+        .collect()
+}
+
 /// The edges to split this pass: every wanted edge that is the refinement edge of both its
 /// faces, and for the others the refinement edge that blocks them (followed until one is
 /// ready). Sorted and without repeats, so the pass is deterministic.
@@ -58,4 +79,21 @@ pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
         })
         .collect();
     mesh.split_edges(&made)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::set_flags;
+
+    #[test]
+    fn set_flags_lists_every_set_flag_in_order() {
+        assert!(set_flags(&[]).is_empty());
+        // Sparse and dense stretches across block and chunk boundaries.
+        let n = 3 * (1 << 15) + 77;
+        let flags: Vec<bool> = (0..n).map(|i| i % 1000 == 999 || (40_000..40_200).contains(&i) || i == n - 1).collect();
+        let expected: Vec<u32> = (0..n as u32).filter(|&i| flags[i as usize]).collect();
+        assert_eq!(set_flags(&flags), expected);
+        assert_eq!(set_flags(&[true; 130]), (0..130).collect::<Vec<u32>>());
+        assert!(set_flags(&vec![false; 70_000]).is_empty());
+    }
 }
