@@ -285,8 +285,10 @@ impl View {
     }
 
     /// Whether an edge with bounds (`lod_len`, ball `centre`, `radius`) should be split; the
-    /// answer can only turn from yes to no going from a parent edge to its children.
-    #[inline]
+    /// answer can only turn from yes to no going from a parent edge to its children. Always
+    /// inlined: it is the body of the state update's loop, and as a call (which the compiler
+    /// chose in some builds) that loop ran at half speed.
+    #[inline(always)]
     pub fn wants_split(&self, lod_len: f64, centre: DVec3, radius: f64, sea: bool) -> bool {
         if lod_len < 2.0 * self.min_len {
             return false;

@@ -10,8 +10,9 @@ use super::camera::View;
 use crate::mesh::{CollapseSite, EdgeKind, Mesh, VertexFlags};
 use rayon::prelude::*;
 
-/// Whether edge `e` wants to be split for `view`.
-#[inline]
+/// Whether edge `e` wants to be split for `view` (always inlined, like the criterion: the
+/// state update's loop is this and nothing else).
+#[inline(always)]
 pub fn wants(mesh: &Mesh, view: &View, e: u32) -> bool {
     let edge = &mesh.edges[e as usize];
     view.wants_split(edge.lod.len() as f64, mesh.midpoint(e), edge.lod.radius() as f64, edge.kind == EdgeKind::Sea)
