@@ -249,7 +249,7 @@ impl GpuAdaption {
 
     /// Whether the shaders reach the driver with fused multiply-adds forbidden (`spirv.rs`).
     pub fn exact_arithmetic(&self) -> bool {
-        self.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)
+        takes_spirv(&self.device)
     }
 
     /// The device work since the last call, and starts counting again.
@@ -347,6 +347,11 @@ fn stage_source(sources: &[&str]) -> String {
     full
 }
 
+/// Whether `device` was opened to take the shaders as SPIR-V (requested on Vulkan only).
+fn takes_spirv(device: &wgpu::Device) -> bool {
+    device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)
+}
+
 /// A stage's shader: a WGSL module, or SPIR-V passed through, one module per entry point with
 /// the bind group layout wgpu cannot derive from it.
 enum Shader {
@@ -358,7 +363,7 @@ enum Shader {
 /// without contraction where the device takes it (`spirv.rs`), else WGSL.
 fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> Result<Shader, GpuError> {
     let full = stage_source(sources);
-    if device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
+    if takes_spirv(device) {
         let entries = spirv::compile(&full).map_err(|e| GpuError::Device(format!("{label}: {e}")))?;
         let modules = entries
             .into_iter()

@@ -126,27 +126,37 @@ fn options(bindings: &[wgpu::BindGroupLayoutEntry]) -> naga::back::spv::Options<
     }
 }
 
+/// The instructions of a SPIR-V module after its header: each one's first word index and its
+/// words (opcode and word count in the first), or where the module is malformed.
+fn instructions(words: &[u32]) -> Result<Vec<(usize, &[u32])>, String> {
+    let mut found = Vec::new();
+    let mut at = HEADER;
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if count == 0 || at + count > words.len() {
+            return Err(format!("malformed SPIR-V instruction at word {at}"));
+        }
+        found.push((at, &words[at..at + count]));
+        at += count;
+    }
+    Ok(found)
+}
+
 /// Decorates the result of every float arithmetic instruction in `words` `NoContraction`,
 /// inserting the decorations at the end of the annotation section; returns how many.
 pub(crate) fn forbid_contraction(words: &mut Vec<u32>) -> Result<usize, String> {
     let mut results = Vec::new();
     let mut after_annotations = None;
     let mut first_type = None;
-    let mut at = HEADER;
-    while at < words.len() {
-        let count = (words[at] >> 16) as usize;
-        let opcode = words[at] & 0xffff;
-        if count == 0 || at + count > words.len() {
-            return Err(format!("malformed SPIR-V instruction at word {at}"));
-        }
+    for (at, inst) in instructions(words)? {
+        let opcode = inst[0] & 0xffff;
         if ANNOTATIONS.contains(&opcode) {
-            after_annotations = Some(at + count);
+            after_annotations = Some(at + inst.len());
         } else if TYPES.contains(&opcode) && first_type.is_none() {
             first_type = Some(at);
-        } else if FLOAT_ARITHMETIC.contains(&opcode) && count > 2 {
-            results.push(words[at + 2]);
+        } else if FLOAT_ARITHMETIC.contains(&opcode) && inst.len() > 2 {
+            results.push(inst[2]);
         }
-        at += count;
     }
     let insert = after_annotations.or(first_type).ok_or("SPIR-V module without annotations or types")?;
     let decorations: Vec<u32> = results.iter().flat_map(|&id| [3 << 16 | OP_DECORATE, id, NO_CONTRACTION]).collect();
@@ -158,16 +168,13 @@ pub(crate) fn forbid_contraction(words: &mut Vec<u32>) -> Result<usize, String> 
 #[cfg(test)]
 pub(crate) fn contraction_report(words: &[u32]) -> (Vec<u32>, Vec<u32>) {
     let (mut decorated, mut arithmetic) = (Vec::new(), Vec::new());
-    let mut at = HEADER;
-    while at < words.len() {
-        let count = (words[at] >> 16) as usize;
-        let opcode = words[at] & 0xffff;
-        if opcode == OP_DECORATE && count == 3 && words[at + 2] == NO_CONTRACTION {
-            decorated.push(words[at + 1]);
+    for (_, inst) in instructions(words).expect("a well-formed module") {
+        let opcode = inst[0] & 0xffff;
+        if opcode == OP_DECORATE && inst.len() == 3 && inst[2] == NO_CONTRACTION {
+            decorated.push(inst[1]);
         } else if FLOAT_ARITHMETIC.contains(&opcode) {
-            arithmetic.push(words[at + 2]);
+            arithmetic.push(inst[2]);
         }
-        at += count.max(1);
     }
     (decorated, arithmetic)
 }
@@ -243,15 +250,12 @@ mod tests {
         let wgsl: Vec<u32> = candidates.bindings.iter().map(|b| b.binding).collect();
         assert_eq!(wgsl, [0, 1, 2, 4, 5, 6, 7, 8]);
         // `OpDecorate %id Binding n` (decoration 33): n runs over 0..8 without the hole.
-        let words = &candidates.words;
-        let (mut at, mut numbers) = (HEADER, Vec::new());
-        while at < words.len() {
-            let count = (words[at] >> 16) as usize;
-            if words[at] & 0xffff == OP_DECORATE && count == 4 && words[at + 2] == 33 {
-                numbers.push(words[at + 3]);
-            }
-            at += count;
-        }
+        let mut numbers: Vec<u32> = instructions(&candidates.words)
+            .unwrap()
+            .into_iter()
+            .filter(|(_, inst)| inst[0] & 0xffff == OP_DECORATE && inst.len() == 4 && inst[2] == 33)
+            .map(|(_, inst)| inst[3])
+            .collect();
         numbers.sort_unstable();
         assert_eq!(numbers, (0..8).collect::<Vec<u32>>());
     }
