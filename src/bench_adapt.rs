@@ -111,9 +111,9 @@ pub fn run(spec: &PlanetSpec) {
     let r = p.radius_m;
     println!("Base mesh: {} faces, {} vertices.\n", planet.stats.faces, planet.stats.vertices);
     println!(
-        "| view | faces | memory (MB) | bytes/vertex | adapt from base (ms) | new M tris/s | spatial order (ms) | static pass (ms) | static M tris/s |"
+        "| view | faces | memory (MB) | bytes/vertex | adapt from base (ms) | state / select / split (ms) | new M tris/s | spatial order (ms) | static pass (ms) | static M tris/s |"
     );
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for (name, cam) in &views {
         let mut a = Adapter::new(planet.mesh.clone(), p.clone());
         let s = a.adapt(cam, None);
@@ -130,11 +130,14 @@ pub fn run(spec: &PlanetSpec) {
         let pass_ms = t.elapsed().as_secs_f64() * 1000.0 / reps as f64;
         let bytes = s.bytes_per_vertex * s.vertices as f64;
         println!(
-            "| {name} | {} | {:.1} | {:.0} | {:.0} | {:.2} | {:.0} | {:.1} | {:.0} |",
+            "| {name} | {} | {:.1} | {:.0} | {:.0} | {:.0} / {:.0} / {:.0} | {:.2} | {:.0} | {:.1} | {:.0} |",
             s.faces,
             mb(bytes),
             s.bytes_per_vertex,
             s.adapt_ms,
+            s.stage_ms.state,
+            s.stage_ms.select,
+            s.stage_ms.split,
             made as f64 / s.adapt_ms / 1000.0,
             again.stage_ms.compact,
             pass_ms,
@@ -152,7 +155,7 @@ pub fn run(spec: &PlanetSpec) {
         new_tris += 2 * s.splits;
     }
     println!(
-        "| fly-through, {} frames of at most {FLY_THROUGH_FACES} faces (max / mean per frame) | {max_faces} | {:.1} | | {max_ms:.0} / {:.0} | {:.2} | | | |",
+        "| fly-through, {} frames of at most {FLY_THROUGH_FACES} faces (max / mean per frame) | {max_faces} | {:.1} | | {max_ms:.0} / {:.0} | | {:.2} | | | |",
         path.len(),
         mb(max_bytes),
         total_ms / path.len() as f64,

@@ -3,7 +3,7 @@
 //! step 6 and eq. 10–12), then the topology changes.
 
 use crate::mesh::altitude::split_vertex;
-use crate::mesh::{EdgeKind, Mesh, SplitSite, Vertex};
+use crate::mesh::Mesh;
 use crate::params::Params;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -66,19 +66,11 @@ pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
     wanted_chains(mesh, wants, false)
 }
 
-/// Splits the given ready edges; each owns its two faces, so the new vertices are computed in
-/// parallel and then written in parallel (see [`Mesh::split_edges`]). Returns the number of splits; the
-/// split edges' slots now hold their first halves.
-pub fn apply_splits(mesh: &mut Mesh, edges: &[u32], params: &Params) -> usize {
-    let made: Vec<(SplitSite, Vertex, [EdgeKind; 4])> = edges
-        .par_iter()
-        .filter_map(|&e| mesh.split_site(e))
-        .map(|site| {
-            let (v, kinds) = split_vertex(mesh, &site, params);
-            (site, v, kinds)
-        })
-        .collect();
-    mesh.split_edges(&made)
+/// Splits the given ready edges (see [`Mesh::split_edges`]): each new vertex is computed from its
+/// diamond and written with its edges and faces in the same parallel pass. Returns the number of
+/// splits; the split edges' slots now hold their first halves.
+pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params) -> usize {
+    mesh.split_edges(ready, |d| split_vertex(d, params))
 }
 
 #[cfg(test)]

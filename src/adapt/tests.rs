@@ -286,7 +286,9 @@ fn centimetre_edges_at_earth_radius() {
     let mut m = base().mesh.clone();
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;
-    let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| crate::mesh::altitude::split_vertex(m, site, &params);
+    let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| {
+        crate::mesh::altitude::split_vertex(&crate::mesh::Diamond::new(m, site), &params)
+    };
     let mut shortest = f64::MAX;
     for _ in 0..400 {
         let f = (0..m.faces.len() as u32)

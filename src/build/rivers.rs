@@ -8,7 +8,7 @@
 use crate::maps::Map;
 use crate::mesh::altitude::riverbank_floor;
 use crate::mesh::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
-use crate::mesh::{split_kinds, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags, NONE};
+use crate::mesh::{split_kinds, Diamond, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags, NONE};
 use crate::params::Params;
 use crate::rng::{salt, unit, Sequence};
 use std::cmp::Ordering;
@@ -321,7 +321,8 @@ fn base_split_vertex(
     relief: Option<&Map>,
     gradient: &mut Vec<f64>,
 ) -> (Vertex, [EdgeKind; 4]) {
-    let seed = split_seed(m, site);
+    let diamond = Diamond::new(m, site);
+    let seed = split_seed(&diamond);
     let edge = &m.edges[site.edge as usize];
     let (f1, f2) = (m.faces[site.f1 as usize].kind, m.faces[site.f2 as usize].kind);
     let kinds = split_kinds(edge.kind, f1, f2);
@@ -330,24 +331,24 @@ fn base_split_vertex(
     let sea = p.sea_level_m;
     let (pos, ground, water, grad, flags) = match edge.kind {
         EdgeKind::Sea => {
-            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
             let mid = (va.ground + vb.ground) as f64 * 0.5;
             let g = (mid + (xi - 0.5) * m.edge_length(site.edge) * SHELF_SLOPE * 0.5).min(sea - 1.0);
             (pos, g, sea, 0.0, VertexFlags::empty())
         }
         EdgeKind::Coast => {
-            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
             (pos, sea + p.riverbed_edge_height_m * xi, sea, 0.0, VertexFlags::empty())
         }
         EdgeKind::River => {
-            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
             let g = (va.ground + vb.ground) as f64 * 0.5;
             let w = (va.water + vb.water) as f64 * 0.5;
             let grad = (gradient[site.a as usize] + gradient[site.b as usize]) * 0.5;
             (pos, g, w, grad, VertexFlags::RIVER)
         }
         EdgeKind::Continent => {
-            let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
+            let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
             let around = [(site.a, va), (site.b, vb), (site.t, vt), (site.d, vd)];
             let wet = VertexFlags(VertexFlags::RIVER.0 | VertexFlags::COAST.0);
             let (r, vr) = around

@@ -36,12 +36,13 @@ const RANDOM_BELOW_RAD: f64 = 0.175;
 /// Splits one edge of the base shape: eq. 2 position, eq. 1 lift to the sphere.
 fn shape_split(mesh: &mut Mesh, e: u32) {
     let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| {
-        let seed = split_seed(m, site);
+        let diamond = crate::mesh::Diamond::new(m, site);
+        let seed = split_seed(&diamond);
         let (a, b) = (m.pos(site.a), m.pos(site.b));
         let p = if a.angle_between(b) > RANDOM_BELOW_RAD {
             (a + b) * 0.5
         } else {
-            well_shaped(m, site, weighted_position(m, site, seed))
+            well_shaped(&diamond, weighted_position(&diamond, seed))
         };
         let p = lift(p, m.radius, 0.0);
         (Vertex::new(p, seed), split_kinds(EdgeKind::Sea, crate::mesh::FaceKind::Sea, crate::mesh::FaceKind::Sea))

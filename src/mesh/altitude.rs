@@ -2,11 +2,11 @@
 //! floor, coast, river (interpolated), and continent vertices bounded by the riverbed and slope
 //! rules, or made the spring of a new river arm.
 //!
-//! Everything here is a function of the split site's four vertices and the new vertex's seed,
-//! so the same edge always yields the same vertex.
+//! Everything here is a function of the split's diamond (its edge, faces and four corners) and
+//! the new vertex's seed, so the same edge always yields the same vertex.
 
 use super::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
-use super::{split_kinds, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags};
+use super::{split_kinds, Diamond, EdgeKind, Tangent, Vertex, VertexFlags};
 use crate::params::Params;
 use crate::rng::{salt, unit};
 use glam::DVec3;
@@ -61,42 +61,34 @@ fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
 }
 
 /// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`.
-pub fn split_vertex(m: &Mesh, site: &SplitSite, p: &Params) -> (Vertex, [EdgeKind; 4]) {
-    let seed = split_seed(m, site);
-    let edge = &m.edges[site.edge as usize];
-    let kinds = split_kinds(edge.kind, m.faces[site.f1 as usize].kind, m.faces[site.f2 as usize].kind);
-    let pos = split_position(m, site, seed, edge.kind, p.min_river_length_m);
-    match edge.kind {
-        EdgeKind::Continent => continent_vertex(m, site, p, seed, pos, kinds),
-        _ => wet_vertex(m, site, p, seed, pos, kinds),
+pub fn split_vertex(d: &Diamond, p: &Params) -> (Vertex, [EdgeKind; 4]) {
+    let seed = split_seed(d);
+    let kinds = split_kinds(d.edge.kind, d.faces[0].kind, d.faces[1].kind);
+    let pos = split_position(d, seed, d.edge.kind, p.min_river_length_m);
+    match d.edge.kind {
+        EdgeKind::Continent => continent_vertex(d, p, seed, pos, kinds),
+        _ => wet_vertex(d, p, seed, pos, kinds),
     }
 }
 
 /// Sea, coast and river splits (§5.3 step 6): the sea floor by midpoint displacement below sea
 /// level, a coast point near sea level, or the river interpolated between its ends.
-pub fn wet_vertex(
-    m: &Mesh,
-    site: &SplitSite,
-    p: &Params,
-    seed: u32,
-    pos: DVec3,
-    kinds: [EdgeKind; 4],
-) -> (Vertex, [EdgeKind; 4]) {
-    let edge = &m.edges[site.edge as usize];
-    let (va, vb) = (&m.vertices[site.a as usize], &m.vertices[site.b as usize]);
+pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKind; 4]) -> (Vertex, [EdgeKind; 4]) {
+    let edge = &d.edge;
+    let (va, vb) = (d.a(), d.b());
     let xi = altitude_random(seed);
     let sea = p.sea_level_m;
     let mid_ground = (va.ground as f64 + vb.ground as f64) * 0.5;
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
-            let g = (mid_ground + (xi - 0.5) * m.edge_length(site.edge) * SEA_ROUGHNESS).min(sea - 1.0);
+            let g = (mid_ground + (xi - 0.5) * d.edge_length() * SEA_ROUGHNESS).min(sea - 1.0);
             (g, sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {
             // A shore point: within a riverbank's height of sea level, its offset shrinking with
             // the edge so that refining a shore flattens it instead of keeping metre-high steps
             // over ever shorter distances.
-            let rough = p.riverbed_edge_height_m.min(land_roughness(m.edge_length(site.edge)));
+            let rough = p.riverbed_edge_height_m.min(land_roughness(d.edge_length()));
             let g = (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
             (g, sea, VertexFlags::empty())
         }
@@ -105,7 +97,7 @@ pub fn wet_vertex(
             (mid_ground.min(w), w, VertexFlags::RIVER)
         }
     };
-    let mut v = Vertex::new(lift(pos, m.radius, ground), seed);
+    let mut v = Vertex::new(lift(pos, d.radius, ground), seed);
     v.ground = ground as f32;
     v.water = water as f32;
     v.flags = flags | VertexFlags::REFINED;
@@ -120,16 +112,14 @@ pub fn wet_vertex(
 /// (eq. 11) and the maximum ground slope (eq. 12); or, where the rules allow it, the spring of a
 /// new river arm flowing into a neighbouring river vertex (eq. 10).
 fn continent_vertex(
-    m: &Mesh,
-    site: &SplitSite,
+    d: &Diamond,
     p: &Params,
     seed: u32,
     pos: DVec3,
     mut kinds: [EdgeKind; 4],
 ) -> (Vertex, [EdgeKind; 4]) {
-    let ends = [site.a, site.t, site.b, site.d]; // the far ends of e1, e2, e3, e4
-    let around = ends.map(|v| &m.vertices[v as usize]);
-    let r = m.radius;
+    let around = [d.a(), d.t(), d.b(), d.d()]; // the far ends of e1, e2, e3, e4
+    let r = d.radius;
     let xi = altitude_random(seed);
     let lens = around.map(|v| horizontal(pos, v.p(), r));
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
@@ -153,7 +143,7 @@ fn continent_vertex(
         any_lo = any_lo.max(below);
         hi = hi.min(v.ground as f64 + le * p.ground_slope());
     }
-    let edge_len = m.edge_length(site.edge);
+    let edge_len = d.edge_length();
 
     // Eq. 10: a new river arm, when the new edge to a river vertex is long enough and an
     // altitude exists above that river (by s_r) yet below every dry neighbour's bank.

@@ -6,11 +6,11 @@
 //! entity. What neighbours can share is an outer edge, of which each operation relinks only the
 //! face slot of its own face, and a corner vertex, whose edge link only the operation that owns
 //! the linked edge moves. Those two writes are single-word atomic stores (and the relink reads
-//! the slot atomically); every other access touches owned entities or reads positions, which no
-//! operation of a batch changes.
+//! the slot atomically); every other access touches owned entities or reads the other fields of
+//! corner vertices, which no operation of a batch changes.
 
 use super::split::DEAD;
-use super::{CollapseSite, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags, LOD_RADIUS};
+use super::{CollapseSite, Diamond, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags, LOD_RADIUS, NONE};
 use glam::DVec3;
 use std::ptr::{addr_of, addr_of_mut};
 use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
@@ -29,11 +29,6 @@ unsafe impl Sync for Buffers {}
 unsafe impl Send for Buffers {}
 
 impl Buffers {
-    /// Position of vertex `v`, reading that field alone.
-    unsafe fn pos(&self, v: u32) -> DVec3 {
-        DVec3::from_array(addr_of!((*self.v.add(v as usize)).pos).read())
-    }
-
     /// The edge link of vertex `v`, as an atomic word.
     unsafe fn link(&self, v: u32) -> &AtomicU32 {
         &*(addr_of_mut!((*self.v.add(v as usize)).edge) as *const AtomicU32)
@@ -51,29 +46,68 @@ impl Buffers {
         }
     }
 
-    /// Moves vertex `v`'s edge link from `gone` to `keep` if it points to `gone`.
+    /// Moves vertex `v`'s edge link from `gone` to `keep` if it points to `gone`. A plain load
+    /// and store, not a compare-and-swap: only the operation that owns `gone` ever finds the
+    /// link pointing to it, so no other thread of the batch writes the word while it does
+    /// (and a locked instruction would stall every other memory access of the batch's loop).
     unsafe fn move_link(&self, v: u32, gone: u32, keep: u32) {
-        let _ = self.link(v).compare_exchange(gone, keep, Relaxed, Relaxed);
+        let link = self.link(v);
+        if link.load(Relaxed) == gone {
+            link.store(keep, Relaxed);
+        }
     }
 
-    /// The `i`-th split of a batch (see [`super::Mesh::split_ids`] for its ids).
+    /// A corner of a split: vertex `v` without its edge link, field by field (another split
+    /// of the batch may be moving the link; nothing else of an existing vertex changes).
+    unsafe fn corner(&self, v: u32) -> Vertex {
+        let p = self.v.add(v as usize);
+        Vertex {
+            pos: addr_of!((*p).pos).read(),
+            ground: addr_of!((*p).ground).read(),
+            water: addr_of!((*p).water).read(),
+            edge: NONE,
+            parent_lod: addr_of!((*p).parent_lod).read(),
+            seed: addr_of!((*p).seed).read(),
+            tangent: addr_of!((*p).tangent).read(),
+            flags: addr_of!((*p).flags).read(),
+        }
+    }
+
+    /// The diamond of edge `e` (as [`Diamond::new`] of its split site).
     ///
     /// # Safety
-    /// The buffers hold room for the batch's new slots, `site` is a ready split site, and no
-    /// other operation of the batch owns its edge or faces.
-    pub unsafe fn split(&self, site: &SplitSite, mut vertex: Vertex, kinds: [EdgeKind; 4], i: usize) {
-        let SplitSite { edge: e1, a, b, t, d, f1, f2 } = *site;
+    /// No other operation of the batch owns `e` or its faces.
+    ///
+    /// # Panics
+    /// When `e` is not ready: the refinement edge of both its faces.
+    pub unsafe fn diamond(&self, e: u32, radius: f64) -> Diamond {
+        let edge = self.e.add(e as usize).read();
+        let [f1, f2] = edge.f;
+        let faces = [self.f.add(f1 as usize).read(), self.f.add(f2 as usize).read()];
+        assert!(faces[0].e[0] == e && faces[1].e[0] == e, "edge {e} is not ready to split");
+        let site = SplitSite { edge: e, a: edge.v[0], b: edge.v[1], t: faces[0].v[0], d: faces[1].v[0], f1, f2 };
+        Diamond { site, edge, faces, corners: [site.a, site.b, site.t, site.d].map(|v| self.corner(v)), radius }
+    }
+
+    /// The `i`-th split of a batch (see [`super::Mesh::split_ids`] for its ids): the diamond's
+    /// edge and faces become four and four around `vertex`.
+    ///
+    /// # Safety
+    /// The buffers hold room for the batch's new slots, `diamond` was read from them for a
+    /// ready edge, and no other operation of the batch owns that edge or its faces.
+    pub unsafe fn split(&self, diamond: &Diamond, mut vertex: Vertex, kinds: [EdgeKind; 4], i: usize) {
+        let SplitSite { edge: e1, a, b, t, d, f1, f2 } = diamond.site;
         let (nv, ne, nf) = self.sizes;
         let m = (nv + i) as u32;
         let e2 = (ne + 3 * i) as u32;
         let (e3, e4) = (e2 + 1, e2 + 2);
         let f3 = (nf + 2 * i) as u32;
         let f4 = f3 + 1;
-        let old1 = self.f.add(f1 as usize).read();
-        let old2 = self.f.add(f2 as usize).read();
-        let parent = self.e.add(e1 as usize).read();
+        let [old1, old2] = diamond.faces;
+        let parent = diamond.edge;
         let level = parent.level + 1;
-        let (pa, pb, pm) = (self.pos(a), self.pos(b), vertex.p());
+        let [pa, pb, pt, pd] = diamond.positions();
+        let pm = vertex.p();
         let parent_mid = (pa + pb) * 0.5;
 
         // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
@@ -90,9 +124,9 @@ impl Buffers {
             Edge { v, f, lod, level, kind, _pad: 0 }
         };
         self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], pa, pm));
-        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], pm, self.pos(t)));
+        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], pm, pt));
         self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], pm, pb));
-        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], pm, self.pos(d)));
+        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], pm, pd));
         vertex.edge = e1;
         vertex.parent_lod = parent.lod;
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));

@@ -14,6 +14,7 @@
 pub mod altitude;
 mod batch;
 mod collapse;
+mod diamond;
 mod kinds;
 mod order;
 mod packed;
@@ -22,6 +23,7 @@ pub mod terrain;
 pub mod validate;
 
 pub use collapse::CollapseSite;
+pub use diamond::Diamond;
 pub use kinds::{EdgeKind, FaceKind, VertexFlags};
 pub use packed::{Lod, Tangent};
 pub use split::{split_kinds, Split, SplitSite};

@@ -7,7 +7,7 @@
 //! faces `f3` and `f4` take the halves at `b`.
 
 use super::batch::Buffers;
-use super::{EdgeKind, FaceKind, Mesh, Vertex, NONE};
+use super::{Diamond, EdgeKind, FaceKind, Mesh, Vertex, NONE};
 
 /// Where a split happens: the edge, its end points and the corners opposite it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -69,32 +69,48 @@ impl Mesh {
     /// split edge's bounds for its collapse.
     pub fn split_edge(&mut self, site: &SplitSite, vertex: Vertex, kinds: [EdgeKind; 4]) -> Split {
         let split = self.split_ids(site, 0);
-        self.split_edges(&[(*site, vertex, kinds)]);
+        assert_eq!(self.split_site(site.edge).as_ref(), Some(site), "not a split site of this mesh");
+        self.split_edges(&[site.edge], |_| (vertex, kinds));
         split
     }
 
     /// Splits many ready edges at once (each the refinement edge of both its faces, so no two
-    /// share a face), in parallel: the `i`-th split gets the ids of [`Mesh::split_ids`]. Each
-    /// split owns its edge, its two faces and its new slots; the only entities two splits can
-    /// share are an outer edge (each relinks the face slot of its own face) and a corner vertex
-    /// (only the split whose edge it points to moves its edge link), so those two writes are
-    /// single-word atomic stores and everything else is plain. Returns the number of splits.
-    pub fn split_edges(&mut self, items: &[(SplitSite, Vertex, [EdgeKind; 4])]) -> usize {
+    /// share a face; a batch holds each edge once), in parallel: the `i`-th split gets the ids
+    /// of [`Mesh::split_ids`] and the new vertex and edge kinds `make` computes from its
+    /// [`Diamond`]. Each split reads its
+    /// diamond once, then computes and writes while it is in cache. It owns its edge, its two
+    /// faces and its new slots; the only entities two splits can share are an outer edge (each
+    /// relinks the face slot of its own face) and a corner vertex (only the split whose edge it
+    /// points to moves its edge link), so those two writes are single-word atomic stores and
+    /// everything else is plain. Returns the number of splits.
+    ///
+    /// # Panics
+    /// When an edge is not ready (the mesh is then left inconsistent: a caller's bug).
+    pub fn split_edges<F>(&mut self, edges: &[u32], make: F) -> usize
+    where
+        F: Fn(&Diamond) -> (Vertex, [EdgeKind; 4]) + Sync,
+    {
         use rayon::prelude::*;
-        let n = items.len();
+        let n = edges.len();
         self.vertices.reserve(n);
         self.edges.reserve(3 * n);
         self.faces.reserve(2 * n);
         let (nv, ne, nf) = (self.vertices.len(), self.edges.len(), self.faces.len());
+        let radius = self.radius;
         let bufs = Buffers {
             v: self.vertices.as_mut_ptr(),
             e: self.edges.as_mut_ptr(),
             f: self.faces.as_mut_ptr(),
             sizes: (nv, ne, nf),
         };
-        items.par_iter().enumerate().with_min_len(256).for_each(|(i, (site, vertex, kinds))| {
-            // SAFETY: see `Buffers::split`; the reservations above hold the new slots.
-            unsafe { bufs.split(site, *vertex, *kinds, i) }
+        edges.par_iter().enumerate().with_min_len(256).for_each(|(i, &e)| {
+            // SAFETY: see `Buffers::split`; the reservations above hold the new slots, and the
+            // diamond is read before its split writes and after no other split could write it.
+            unsafe {
+                let diamond = bufs.diamond(e, radius);
+                let (vertex, kinds) = make(&diamond);
+                bufs.split(&diamond, vertex, kinds, i)
+            }
         });
         // SAFETY: every slot up to the new lengths was written by exactly one split above.
         unsafe {

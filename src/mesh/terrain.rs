@@ -3,28 +3,27 @@
 //! All random numbers come from the new vertex's seed `s_nv = s_ev1 + s_ev2`, so the same edge
 //! always yields the same vertex.
 
-use super::{EdgeKind, Mesh, SplitSite};
+use super::{Diamond, EdgeKind};
 use crate::rng::{salt, uniform, unit};
 use glam::DVec3;
 
-/// Seed of the vertex a split of `site` creates (§3.1: the sum of the end points' seeds).
-pub fn split_seed(mesh: &Mesh, site: &SplitSite) -> u32 {
-    let v = &mesh.vertices;
-    v[site.a as usize].seed.wrapping_add(v[site.b as usize].seed)
+/// Seed of the vertex a split of the diamond `d` creates (§3.1: the sum of the end points' seeds).
+pub fn split_seed(d: &Diamond) -> u32 {
+    d.a().seed.wrapping_add(d.b().seed)
 }
 
 /// Eq. 2: a randomised weighted sum of the four vertices around the edge, with
 /// `xi, eta` uniform in `[0.25, 0.75)`. Returns an unprojected point.
-pub fn weighted_position(mesh: &Mesh, site: &SplitSite, seed: u32) -> DVec3 {
+pub fn weighted_position(diamond: &Diamond, seed: u32) -> DVec3 {
     let xi = uniform(seed, salt::XI, 0.25, 0.75);
     let eta = uniform(seed, salt::ETA, 0.25, 0.75);
-    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v));
+    let [a, b, t, d] = diamond.positions();
     (1.0 - eta) * (xi * a + (1.0 - xi) * t) + eta * (xi * d + (1.0 - xi) * b)
 }
 
 /// Sea vertices sit at the centre of the split edge (§5.3 step 5).
-pub fn edge_centre(mesh: &Mesh, site: &SplitSite) -> DVec3 {
-    (mesh.pos(site.a) + mesh.pos(site.b)) * 0.5
+pub fn edge_centre(d: &Diamond) -> DVec3 {
+    (d.a().p() + d.b().p()) * 0.5
 }
 
 /// Eq. 7–9: a river vertex between `v_t` and `v_d`. For edges shorter than the minimum river
@@ -34,15 +33,15 @@ pub fn edge_centre(mesh: &Mesh, site: &SplitSite) -> DVec3 {
 /// Eq. 8 is printed garbled in the paper; we read it as: `v_s`'s projection onto `v_t -> v_d`
 /// gives the curve's parameter `xi_s`, and the new `xi` is `xi_s` plus a quarter of the random
 /// offset `xi - 1/2`, clamped to `[0.25, 0.75]` so the vertex stays inside the edge's diamond.
-pub fn river_position(mesh: &Mesh, site: &SplitSite, seed: u32, min_river_length: f64) -> DVec3 {
+pub fn river_position(diamond: &Diamond, seed: u32, min_river_length: f64) -> DVec3 {
     let xi = uniform(seed, salt::XI, 0.25, 0.75);
-    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v));
+    let [a, b, t, d] = diamond.positions();
     let length = a.distance(b);
     let xi = if length < min_river_length {
         // Eq. 9 assumes the river flows from ev1 to ev2; orient by water altitude.
-        let (wa, wb) = (mesh.vertices[site.a as usize].water, mesh.vertices[site.b as usize].water);
-        let (up, down) = if wa >= wb { (site.a, site.b) } else { (site.b, site.a) };
-        let (tu, td) = (mesh.vertices[up as usize].tangent.get(), mesh.vertices[down as usize].tangent.get());
+        let (va, vb) = (diamond.a(), diamond.b());
+        let (up, down) = if va.water >= vb.water { (va, vb) } else { (vb, va) };
+        let (tu, td) = (up.tangent.get(), down.tangent.get());
         let vs = (a + b) * 0.5 + length * (tu - td) * 0.25;
         let td_line = t - d;
         let denom = td_line.length_squared();
@@ -56,13 +55,13 @@ pub fn river_position(mesh: &Mesh, site: &SplitSite, seed: u32, min_river_length
 }
 
 /// Position of a new vertex on an edge of `kind` (before lifting to its altitude).
-pub fn split_position(mesh: &Mesh, site: &SplitSite, seed: u32, kind: EdgeKind, min_river_length: f64) -> DVec3 {
+pub fn split_position(d: &Diamond, seed: u32, kind: EdgeKind, min_river_length: f64) -> DVec3 {
     let p = match kind {
-        EdgeKind::Sea => return edge_centre(mesh, site),
-        EdgeKind::River => river_position(mesh, site, seed, min_river_length),
-        EdgeKind::Coast | EdgeKind::Continent => weighted_position(mesh, site, seed),
+        EdgeKind::Sea => return edge_centre(d),
+        EdgeKind::River => river_position(d, seed, min_river_length),
+        EdgeKind::Coast | EdgeKind::Continent => weighted_position(d, seed),
     };
-    well_shaped(mesh, site, p)
+    well_shaped(d, p)
 }
 
 /// Smallest shape quality ([`face_quality`]) a randomised split position may give the four new
@@ -79,9 +78,9 @@ pub const MIN_SPLIT_QUALITY: f64 = 0.4;
 /// way back to the split edge's centre; the centre itself when neither is good enough (it
 /// never folds a face: it halves both old faces). A function of the same four vertices and
 /// seed, so still reproducible.
-pub fn well_shaped(mesh: &Mesh, site: &SplitSite, p: DVec3) -> DVec3 {
-    let [a, b, t, d] = [site.a, site.b, site.t, site.d].map(|v| mesh.pos(v).normalize());
-    let c = edge_centre(mesh, site);
+pub fn well_shaped(diamond: &Diamond, p: DVec3) -> DVec3 {
+    let [a, b, t, d] = diamond.positions().map(|p| p.normalize());
+    let c = edge_centre(diamond);
     for scale in [1.0, 0.5, 0.25] {
         // `p` itself at full scale (`c + (p - c)` can differ from `p` in the last bit).
         let x = if scale == 1.0 { p } else { c + (p - c) * scale };

@@ -143,26 +143,44 @@ fn batches_of_splits_and_collapses_equal_one_at_a_time() {
         let e = rng.below(m.edges.len()) as u32;
         m.refine_edge(e, &mut make);
     }
-    let items: Vec<(SplitSite, Vertex, [EdgeKind; 4])> = (0..m.edges.len() as u32)
-        .filter_map(|e| m.split_site(e))
-        .map(|s| (s, midpoint_vertex(&m, &s), [EdgeKind::Sea; 4]))
-        .collect();
-    assert!(items.len() > 1000, "{}", items.len());
+    let sites: Vec<SplitSite> = (0..m.edges.len() as u32).filter_map(|e| m.split_site(e)).collect();
+    assert!(sites.len() > 1000, "{}", sites.len());
+    // Each vertex a function of its diamond: the edge's midpoint, seeded by the edge.
+    let from_diamond = |d: &Diamond| {
+        let p = (d.a().p() + d.b().p()).normalize() * d.radius;
+        let kind = if d.site.edge.is_multiple_of(2) { EdgeKind::Sea } else { EdgeKind::Coast };
+        (Vertex { flags: VertexFlags::REFINED, ..Vertex::new(p, d.site.edge) }, [kind; 4])
+    };
     let (mut batch, mut single) = (m.clone(), m.clone());
-    assert_eq!(batch.split_edges(&items), items.len());
-    for (site, v, kinds) in &items {
-        single.split_edge(site, *v, *kinds);
+    let edges: Vec<u32> = sites.iter().map(|s| s.edge).collect();
+    assert_eq!(batch.split_edges(&edges, from_diamond), sites.len());
+    for site in &sites {
+        let (v, kinds) = from_diamond(&Diamond::new(&single, site));
+        single.split_edge(site, v, kinds);
     }
     batch.validate().unwrap();
     assert!(batch == single, "split batch differs");
 
-    let sites: Vec<CollapseSite> = (0..batch.vertices.len() as u32).filter_map(|v| batch.collapse_site(v)).collect();
-    assert!(sites.len() >= items.len(), "{}", sites.len());
-    batch.collapse_vertices(&sites);
-    for site in &sites {
+    let collapsible: Vec<CollapseSite> =
+        (0..batch.vertices.len() as u32).filter_map(|v| batch.collapse_site(v)).collect();
+    assert!(collapsible.len() >= edges.len(), "{}", collapsible.len());
+    batch.collapse_vertices(&collapsible);
+    for site in &collapsible {
         single.collapse_vertex(site);
     }
     assert!(batch == single, "collapse batch differs");
     batch.compact();
     batch.validate().unwrap();
+}
+
+#[test]
+#[should_panic(expected = "is not ready to split")]
+fn a_batch_refuses_an_edge_that_is_not_ready() {
+    let mut m = sphere(400);
+    let e = (0..m.edges.len() as u32).find(|&e| m.split_site(e).is_none()).unwrap();
+    m.split_edges(&[e], |d| (midpoint_vertex_of(d), [EdgeKind::Sea; 4]));
+}
+
+fn midpoint_vertex_of(d: &Diamond) -> Vertex {
+    Vertex { flags: VertexFlags::REFINED, ..Vertex::new((d.a().p() + d.b().p()) * 0.5, 7) }
 }

@@ -131,7 +131,7 @@ impl<'a> Refiner<'a> {
         let mut sites: Vec<SplitSite> = Vec::new();
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
-            split_vertex(m, site, params)
+            split_vertex(&crate::mesh::Diamond::new(m, site), params)
         });
         for (site, split) in sites.iter().zip(&splits) {
             let m = split.v;
