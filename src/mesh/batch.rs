@@ -57,6 +57,41 @@ impl Buffers {
         }
     }
 
+    /// Asks for the cache lines that split `k + 16`, `k + 8` and `k + 4` of `chunk` will read.
+    /// Splits wait on memory, not arithmetic: each reads its edge, then the edge's faces and
+    /// ends, then the apexes and outer edges those faces name, all scattered over the buffers.
+    /// So while split `k` runs, the edge of split `k + 16` is requested, the faces and ends of
+    /// `k + 8` (whose edge has arrived by then), and the apexes and outer edges of `k + 4`.
+    ///
+    /// # Safety
+    /// `chunk` holds ready edges of a batch that this thread splits in order, and split `k` is
+    /// the next: the entities read here belong to later splits of this thread, which no other
+    /// thread writes.
+    pub unsafe fn prefetch_split(&self, chunk: &[u32], k: usize) {
+        if let Some(&e) = chunk.get(k + 16) {
+            prefetch(self.e.add(e as usize));
+        }
+        if let Some(&e) = chunk.get(k + 8) {
+            let edge = self.e.add(e as usize);
+            for f in addr_of!((*edge).f).read() {
+                prefetch(self.f.add(f as usize));
+            }
+            for v in addr_of!((*edge).v).read() {
+                prefetch_vertex(self.v.add(v as usize));
+            }
+        }
+        if let Some(&e) = chunk.get(k + 4) {
+            let [f1, f2] = addr_of!((*self.e.add(e as usize)).f).read();
+            let (x1, x2) = (self.f.add(f1 as usize), self.f.add(f2 as usize));
+            for v in [addr_of!((*x1).v[0]).read(), addr_of!((*x2).v[0]).read()] {
+                prefetch_vertex(self.v.add(v as usize));
+            }
+            for outer in [addr_of!((*x1).e[1]).read(), addr_of!((*x2).e[2]).read()] {
+                prefetch(self.e.add(outer as usize));
+            }
+        }
+    }
+
     /// A corner of a split: vertex `v` without its edge link, field by field (another split
     /// of the batch may be moving the link; nothing else of an existing vertex changes).
     unsafe fn corner(&self, v: u32) -> Vertex {
@@ -169,4 +204,23 @@ impl Buffers {
             addr_of_mut!((*self.f.add(f as usize)).v).write([DEAD; 3]);
         }
     }
+}
+
+/// Asks for the cache line holding `p` (a hint: nothing happens where the target has none).
+#[inline(always)]
+fn prefetch<T>(p: *const T) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch reads nothing into the program and never faults, whatever the address.
+    unsafe {
+        std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p as *const i8)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
+}
+
+/// Asks for both cache lines a vertex may straddle (48 bytes, 8-byte aligned).
+#[inline(always)]
+fn prefetch_vertex(p: *const Vertex) {
+    prefetch(p);
+    prefetch((p as *const u8).wrapping_add(std::mem::size_of::<Vertex>() - 1));
 }

@@ -103,13 +103,19 @@ impl Mesh {
             f: self.faces.as_mut_ptr(),
             sizes: (nv, ne, nf),
         };
-        edges.par_iter().enumerate().with_min_len(256).for_each(|(i, &e)| {
-            // SAFETY: see `Buffers::split`; the reservations above hold the new slots, and the
-            // diamond is read before its split writes and after no other split could write it.
-            unsafe {
-                let diamond = bufs.diamond(e, radius);
-                let (vertex, kinds) = make(&diamond);
-                bufs.split(&diamond, vertex, kinds, i)
+        // Each thread splits whole chunks in order, so it can ask for the memory of the next
+        // splits of its chunk ahead of time (see `Buffers::prefetch_split`).
+        const CHUNK: usize = 512;
+        edges.par_chunks(CHUNK).enumerate().for_each(|(c, chunk)| {
+            for (k, &e) in chunk.iter().enumerate() {
+                // SAFETY: see `Buffers::split` and `Buffers::prefetch_split`; the reservations
+                // above hold the new slots, and no other split writes this split's diamond.
+                unsafe {
+                    bufs.prefetch_split(chunk, k);
+                    let diamond = bufs.diamond(e, radius);
+                    let (vertex, kinds) = make(&diamond);
+                    bufs.split(&diamond, vertex, kinds, c * CHUNK + k);
+                }
             }
         });
         // SAFETY: every slot up to the new lengths was written by exactly one split above.
