@@ -1,7 +1,8 @@
-// Split-list compaction (paper §5.3, Algorithm 2 steps 1-2): the twin of `wanted_chains` in
-// `src/adapt/split.rs`. Every wanted edge follows its chain of blocking refinement edges to the
-// edge that is ready (the refinement edge of both its faces); a chain stops where it meets an
-// edge another chain already took (one atomic flag per edge), so shared parts are walked once.
+// Split-list compaction (paper §5.3, Algorithm 2 steps 1-2): the twin of `select_splits` in
+// `src/adapt/split.rs` (which follows all chains a step per round instead of one thread per
+// chain). Every wanted edge follows its chain of blocking refinement edges to the edge that is
+// ready (the refinement edge of both its faces); a chain stops where it meets an edge another
+// chain already took (one atomic flag per edge), so shared parts are walked once.
 // The ready edges are then compacted into a list in edge order by a prefix sum over blocks of
 // `BLOCK` edges, so the list, and the slots the splits take, are the CPU's whatever the
 // scheduling. Layouts: `adapt_mesh.wgsl` (prepended); the prefix sum and its `Grid` (the

@@ -54,12 +54,7 @@ pub fn update_after_collapses(mesh: &Mesh, view: &View, flags: &mut [bool], site
 /// edge on their blocking chains. A vertex whose faces hold such an edge must not collapse, or a
 /// forced split would be undone as soon as it is made.
 pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
-    let chains = super::split::wanted_chains(mesh, wants, true);
-    let mut out = wants.to_vec();
-    for e in chains {
-        out[e as usize] = true;
-    }
-    out
+    super::split::chain_flags(mesh, wants)
 }
 
 /// Vertices that may collapse now: made by a split, their four faces untouched since, no edge of

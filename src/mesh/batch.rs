@@ -9,6 +9,7 @@
 //! the slot atomically); every other access touches owned entities or reads the other fields of
 //! corner vertices, which no operation of a batch changes.
 
+use super::prefetch::{prefetch, prefetch_vertex};
 use super::split::DEAD;
 use super::{CollapseSite, Diamond, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags, LOD_RADIUS, NONE};
 use glam::DVec3;
@@ -204,23 +205,4 @@ impl Buffers {
             addr_of_mut!((*self.f.add(f as usize)).v).write([DEAD; 3]);
         }
     }
-}
-
-/// Asks for the cache line holding `p` (a hint: nothing happens where the target has none).
-#[inline(always)]
-fn prefetch<T>(p: *const T) {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: a prefetch reads nothing into the program and never faults, whatever the address.
-    unsafe {
-        std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p as *const i8)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = p;
-}
-
-/// Asks for both cache lines a vertex may straddle (48 bytes, 8-byte aligned).
-#[inline(always)]
-fn prefetch_vertex(p: *const Vertex) {
-    prefetch(p);
-    prefetch((p as *const u8).wrapping_add(std::mem::size_of::<Vertex>() - 1));
 }

@@ -18,6 +18,7 @@ mod diamond;
 mod kinds;
 mod order;
 mod packed;
+pub mod prefetch;
 mod split;
 pub mod terrain;
 pub mod validate;

@@ -64,6 +64,28 @@ impl Mesh {
         e
     }
 
+    /// [`Mesh::blocking_edge`] of each of `edges`, in parallel, asking for each edge's memory
+    /// 16 edges ahead and for its faces 8 ahead (the loop waits on those scattered reads).
+    pub fn blocking_edges(&self, edges: &[u32]) -> Vec<u32> {
+        use super::prefetch::prefetch;
+        use rayon::prelude::*;
+        let mut out = vec![0u32; edges.len()];
+        out.par_chunks_mut(512).zip(edges.par_chunks(512)).for_each(|(out, chunk)| {
+            for (k, (o, &e)) in out.iter_mut().zip(chunk).enumerate() {
+                if let Some(&x) = chunk.get(k + 16) {
+                    prefetch(self.edges.as_ptr().wrapping_add(x as usize));
+                }
+                if let Some(&x) = chunk.get(k + 8) {
+                    for f in self.edges[x as usize].f {
+                        prefetch(self.faces.as_ptr().wrapping_add(f as usize));
+                    }
+                }
+                *o = self.blocking_edge(e);
+            }
+        });
+        out
+    }
+
     /// Splits the edge at `site`, inserting `vertex` with inner edge kinds `kinds` (`[e1..e4]`).
     /// Lengths and level-of-detail bounds of the four edges are set; the new vertex keeps the
     /// split edge's bounds for its collapse.
