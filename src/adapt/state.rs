@@ -7,6 +7,7 @@
 //! `e1..e4` share one split level, and when no edge of those faces wants a split.
 
 use super::camera::View;
+use crate::mesh::prefetch::prefetch_vertex;
 use crate::mesh::{CollapseSite, EdgeKind, Mesh, VertexFlags};
 use rayon::prelude::*;
 
@@ -18,20 +19,39 @@ pub fn wants(mesh: &Mesh, view: &View, e: u32) -> bool {
     view.wants_split(edge.lod.len() as f64, mesh.midpoint(e), edge.lod.radius() as f64, edge.kind == EdgeKind::Sea)
 }
 
+/// [`wants`] of the edges `edge_at(0..n)`, in order. Chunks run in parallel; each asks for the
+/// end points of the edge 8 ahead, as the ends of a mesh's edges lie scattered over the vertex
+/// buffer and the criterion needs their positions.
+fn wants_of(mesh: &Mesh, view: &View, n: usize, edge_at: impl Fn(usize) -> u32 + Sync) -> Vec<bool> {
+    const CHUNK: usize = 4096;
+    const AHEAD: usize = 8;
+    let mut out = vec![false; n];
+    out.par_chunks_mut(CHUNK).enumerate().for_each(|(c, out)| {
+        let base = c * CHUNK;
+        for k in 0..out.len() {
+            if k + AHEAD < out.len() {
+                for v in mesh.edges[edge_at(base + k + AHEAD) as usize].v {
+                    prefetch_vertex(mesh.vertices.as_ptr().wrapping_add(v as usize));
+                }
+            }
+            out[k] = wants(mesh, view, edge_at(base + k));
+        }
+    });
+    out
+}
+
 /// Whether each edge wants to be split for `view`.
 pub fn edge_wants(mesh: &Mesh, view: &View) -> Vec<bool> {
-    (0..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect()
+    wants_of(mesh, view, mesh.edges.len(), |k| k as u32)
 }
 
 /// Brings `flags` up to date after splits: an edge's answer depends only on its own bounds and
 /// end points, so only the split edges' slots (`changed`) and the appended edges need it.
 pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[u32]) {
     let old = flags.len();
-    let fresh: Vec<bool> =
-        (old as u32..mesh.edges.len() as u32).into_par_iter().map(|e| wants(mesh, view, e)).collect();
-    flags.extend(fresh);
-    let redo: Vec<(u32, bool)> = changed.par_iter().map(|&e| (e, wants(mesh, view, e))).collect();
-    for (e, w) in redo {
+    flags.extend(wants_of(mesh, view, mesh.edges.len() - old, |k| (old + k) as u32));
+    let redo = wants_of(mesh, view, changed.len(), |k| changed[k]);
+    for (&e, w) in changed.iter().zip(redo) {
         flags[e as usize] = w;
     }
 }
