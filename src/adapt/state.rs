@@ -7,7 +7,7 @@
 //! `e1..e4` share one split level, and when no edge of those faces wants a split.
 
 use super::camera::View;
-use crate::mesh::prefetch::prefetch_vertex;
+use crate::mesh::prefetch::{prefetch, prefetch_vertex};
 use crate::mesh::{CollapseSite, EdgeKind, Mesh, VertexFlags};
 use rayon::prelude::*;
 
@@ -95,10 +95,41 @@ pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: O
         let sea = mesh.edges[site.e[0] as usize].kind == EdgeKind::Sea;
         (!view.wants_split(lod.len() as f64, centre, lod.radius() as f64, sea)).then_some(site)
     };
-    match among {
-        Some(vertices) => vertices.par_iter().filter_map(|&v| check(v)).collect(),
-        None => (0..mesh.vertices.len() as u32).into_par_iter().filter_map(check).collect(),
-    }
+    // Each check chases a vertex's edge, that edge's faces and theirs: ask for the first links
+    // of that chain a few vertices ahead.
+    let ahead = |v: u32, depth: usize| {
+        let vert = &mesh.vertices[v as usize];
+        if depth == 0 {
+            prefetch_vertex(vert);
+        } else if vert.flags.contains(VertexFlags::REFINED) && (vert.edge as usize) < mesh.edges.len() {
+            let edge = &mesh.edges[vert.edge as usize];
+            if depth == 1 {
+                prefetch(edge);
+            } else {
+                for f in edge.f.into_iter().filter(|&f| (f as usize) < mesh.faces.len()) {
+                    prefetch(&mesh.faces[f as usize]);
+                }
+            }
+        }
+    };
+    let n = among.map_or(mesh.vertices.len(), <[u32]>::len);
+    let vertex_at = |k: usize| among.map_or(k as u32, |a| a[k]);
+    const CHUNK: usize = 4096;
+    (0..n.div_ceil(CHUNK))
+        .into_par_iter()
+        .flat_map_iter(|c| {
+            let range = c * CHUNK..((c + 1) * CHUNK).min(n);
+            let end = range.end;
+            range.filter_map(move |k| {
+                for (depth, distance) in [(0, 12), (1, 8), (2, 4)] {
+                    if k + distance < end {
+                        ahead(vertex_at(k + distance), depth);
+                    }
+                }
+                check(vertex_at(k))
+            })
+        })
+        .collect()
 }
 
 /// The vertices that collapsing `sites` can have made collapsible: the newest vertices `t` and
