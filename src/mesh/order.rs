@@ -29,12 +29,37 @@ fn spread(x: u64) -> u64 {
     x
 }
 
-/// Old ids of the items with a key, in increasing key order.
-fn sorted_order<T: Sync>(items: &[T], key: impl Fn(&T) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
-    let mut keyed: Vec<(u32, u64, u32)> =
-        items.par_iter().enumerate().filter_map(|(i, x)| key(x).map(|(k, r)| (k, r, i as u32))).collect();
-    keyed.par_sort_unstable();
-    keyed.into_par_iter().map(|(_, _, i)| i).collect()
+/// Old ids of the items with a key `(bucket, rank)`, in increasing key order (no two items share
+/// a key). Buckets are below `buckets` and hold a few items each (an edge's or a face's lowest
+/// new vertex id), so this is a counting sort by bucket and then a sort of each bucket by rank,
+/// far cheaper than sorting millions of keys by comparison.
+fn sorted_order<T: Sync>(items: &[T], buckets: usize, key: impl Fn(&T) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
+    const NO_BUCKET: u32 = u32::MAX;
+    let keys: Vec<(u32, u64)> = items.par_iter().map(|x| key(x).unwrap_or((NO_BUCKET, 0))).collect();
+    let mut start = vec![0u32; buckets + 1];
+    for &(b, _) in &keys {
+        if b != NO_BUCKET {
+            start[b as usize + 1] += 1;
+        }
+    }
+    for b in 0..buckets {
+        start[b + 1] += start[b];
+    }
+    let mut order = vec![0u32; start[buckets] as usize];
+    let mut fill = start[..buckets].to_vec();
+    for (i, &(b, _)) in keys.iter().enumerate() {
+        if b != NO_BUCKET {
+            order[fill[b as usize] as usize] = i as u32;
+            fill[b as usize] += 1;
+        }
+    }
+    for b in 0..buckets {
+        let bucket = &mut order[start[b] as usize..start[b + 1] as usize];
+        if bucket.len() > 1 {
+            bucket.sort_unstable_by_key(|&i| keys[i as usize].1);
+        }
+    }
+    order
 }
 
 /// New id of each old id in `order` (dead ids map to [`DEAD`]).
@@ -124,12 +149,13 @@ impl Mesh {
         });
         let vorder: Vec<u32> = vorder.into_iter().map(|(_, v)| v).collect();
         let vmap = inverse(&vorder, self.vertices.len());
-        let eorder = sorted_order(&self.edges, |e| {
+        let nv = vorder.len();
+        let eorder = sorted_order(&self.edges, nv, |e| {
             let [a, b] = (e.v[0] != DEAD).then(|| e.v.map(|x| vmap[x as usize]))?;
             Some((a.min(b), a.max(b) as u64))
         });
         let emap = inverse(&eorder, self.edges.len());
-        let forder = sorted_order(&self.faces, |f| {
+        let forder = sorted_order(&self.faces, nv, |f| {
             let mut c = (f.v[0] != DEAD).then(|| f.v.map(|x| vmap[x as usize]))?;
             c.sort_unstable();
             Some((c[0], (c[1] as u64) << 32 | c[2] as u64))
