@@ -76,6 +76,16 @@ fn wishes_exceed(faces: usize, wants: &[bool], max: usize) -> bool {
     faces + 2 * wants.iter().filter(|&&w| w).count() > max
 }
 
+/// The mesh of the finest budget-search trial that fitted so far, and its step.
+struct Fitted {
+    step: i32,
+    mesh: Mesh,
+    /// Its device copy on the GPU backend, so that finer trials start from a copy made on the
+    /// device instead of an upload.
+    #[cfg(feature = "gpu")]
+    device: gpu::Resident,
+}
+
 /// Adds the time since `t` to `slot` and restarts `t`.
 fn lap(t: &mut Instant, slot: &mut f64) {
     *slot += t.elapsed().as_secs_f64() * 1000.0;
@@ -126,13 +136,6 @@ impl Adapter {
         self.gpu = gpu;
         self.resident = Default::default();
         self
-    }
-
-    /// Replaces the mesh (the device copy, if any, no longer matches) and returns the old one.
-    fn replace_mesh(&mut self, mesh: Mesh) -> Mesh {
-        self.sync_host();
-        self.forget_device_mesh();
-        std::mem::replace(&mut self.mesh, mesh)
     }
 
     /// Replaces the mesh, dropping the old one (and its device copy, unread).
@@ -256,29 +259,30 @@ impl Adapter {
         let steps_for = |ratio: f64| (ratio.max(1.0).sqrt().ln() / BUDGET_STEP.ln()).ceil() as i32;
         let mut k = self.last_step.unwrap_or(PROBE_STEPS).clamp(0, MAX_STEP);
         let mut over: i32 = -1;
-        let mut fits: Option<(i32, Mesh)> = None;
+        let mut fits: Option<Fitted> = None;
         let mut first = true;
         loop {
             let view = self.view(cam, k);
             // A finer trial from the fitted mesh is over the budget before it starts if the
             // fitted mesh's wanted splits alone would exceed it (no copy needed to know);
-            // otherwise the trial starts from a copy with those wishes.
+            // otherwise the trial starts from a copy with those wishes. (On the GPU backend the
+            // run itself checks that first, on a copy made on the device.)
             let wishes = match fits.as_mut() {
-                Some((_, m)) => Some(self.wishes_of(m, &view)),
+                Some(f) if !self.on_gpu() => Some(self.wishes_of(&mut f.mesh, &view)),
                 _ => None,
             };
             let hopeless = match (&fits, &wishes) {
-                (Some((_, m)), Some(w)) => wishes_exceed(m.faces.len(), w, max),
+                (Some(f), Some(w)) => wishes_exceed(f.mesh.faces.len(), w, max),
                 _ => false,
             };
             let (converged, faces) = if hopeless {
                 (false, max + 1)
             } else {
                 if !first {
-                    self.set_mesh(match &fits {
-                        Some((_, m)) => m.clone(),
-                        None => self.base.clone(),
-                    });
+                    match &fits {
+                        Some(f) => self.resume_from(f),
+                        None => self.set_mesh(self.base.clone()),
+                    }
                 }
                 // Later trials start from the base mesh or one that fitted a coarser target:
                 // both are sub-refinements of this target's mesh, so they only refine.
@@ -292,7 +296,7 @@ impl Adapter {
                 if k == 0 || k == over + 1 {
                     break;
                 }
-                fits = Some((k, self.replace_mesh(Mesh::default())));
+                fits = Some(self.keep_fitted(k));
             } else {
                 over = k;
                 if k >= MAX_STEP {
@@ -300,19 +304,49 @@ impl Adapter {
                     stats.converged = false;
                     break;
                 }
-                if fits.as_ref().is_some_and(|(hi, _)| *hi == over + 1) {
-                    self.set_mesh(fits.take().expect("a fitting mesh").1);
+                if fits.as_ref().is_some_and(|f| f.step == over + 1) {
+                    self.restore(fits.take().expect("a fitting mesh"));
                     k = over + 1;
                     break;
                 }
             }
             k = match &fits {
-                Some((hi, m)) => (hi - self.steps_to_fill(m.faces.len(), max)).clamp(over + 1, hi - 1),
+                Some(f) => (f.step - self.steps_to_fill(f.mesh.faces.len(), max)).clamp(over + 1, f.step - 1),
                 None => (k + steps_for(faces as f64 / max as f64).max(1)).min(MAX_STEP),
             };
         }
         self.last_step = Some(k);
         k
+    }
+
+    /// Takes the mesh (and its device copy) as the budget search's fitted mesh of `step`.
+    fn keep_fitted(&mut self, step: i32) -> Fitted {
+        self.sync_host();
+        #[cfg(feature = "gpu")]
+        let device = self.take_device_mesh();
+        self.forget_device_mesh();
+        Fitted {
+            step,
+            mesh: std::mem::take(&mut self.mesh),
+            #[cfg(feature = "gpu")]
+            device,
+        }
+    }
+
+    /// Starts a trial from a copy of the fitted mesh (and of its device copy).
+    fn resume_from(&mut self, fitted: &Fitted) {
+        self.set_mesh(fitted.mesh.clone());
+        #[cfg(feature = "gpu")]
+        self.resume_device_mesh(&fitted.device);
+    }
+
+    /// Goes back to the fitted mesh, its device copy included.
+    fn restore(&mut self, fitted: Fitted) {
+        self.set_mesh(fitted.mesh);
+        #[cfg(feature = "gpu")]
+        {
+            self.resident = fitted.device;
+        }
     }
 
     /// Compacts the mesh, in spatial order when it is [`compact::scattered`].

@@ -133,6 +133,28 @@ impl Adapter {
         Ok(converged)
     }
 
+    /// Takes the device copy of the mesh (after [`Adapter::sync_host`], so equal to it), for a
+    /// budget search to keep with the mesh it fitted.
+    pub(crate) fn take_device_mesh(&mut self) -> Resident {
+        match self.resident.ahead {
+            true => Resident::default(),
+            false => std::mem::take(&mut self.resident),
+        }
+    }
+
+    /// Makes a device-side copy of `kept` (the device copy of a mesh equal to the host mesh
+    /// just set) the device copy of the mesh, so the next run starts without an upload. On a
+    /// device failure the run uploads the mesh as usual.
+    pub(crate) fn resume_device_mesh(&mut self, kept: &Resident) {
+        let (Some(gpu), Some(dm)) = (&self.gpu, &kept.mesh) else {
+            return;
+        };
+        match dm.duplicate(gpu) {
+            Ok(copy) => self.resident = Resident { mesh: Some(copy), ahead: false },
+            Err(e) => tracing::debug!("copying the fitted mesh on the device failed ({e}); uploading it"),
+        }
+    }
+
     /// Faces of the device copy when it is ahead of the host mesh.
     pub(crate) fn device_faces(&self) -> Option<usize> {
         self.resident.mesh.as_ref().filter(|_| self.resident.ahead).map(|dm| dm.lens.2)

@@ -119,6 +119,19 @@ impl DeviceMesh {
         })
     }
 
+    /// A copy of the mesh in new buffers, made on the device: the same as uploading the mesh
+    /// again (fresh scratch and collapse marks), without crossing the bus.
+    pub(super) fn duplicate(&self, gpu: &GpuAdaption) -> Result<DeviceMesh, GpuError> {
+        let (nv, ne, nf) = self.lens;
+        let copy = DeviceMesh::with_capacity(gpu, nv, ne, nf)?;
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(&self.vertices, 0, &copy.vertices, 0, (nv * VERTEX_BYTES) as u64);
+        encoder.copy_buffer_to_buffer(&self.edges, 0, &copy.edges, 0, (ne * EDGE_BYTES) as u64);
+        encoder.copy_buffer_to_buffer(&self.faces, 0, &copy.faces, 0, (nf * FACE_BYTES) as u64);
+        gpu.queue.submit([encoder.finish()]);
+        Ok(copy)
+    }
+
     /// Capacity in vertices, edges and faces.
     pub(super) fn capacity(&self) -> (usize, usize, usize) {
         (
