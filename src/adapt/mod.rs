@@ -344,7 +344,8 @@ impl Adapter {
     fn restore(&mut self, fitted: Fitted) {
         self.set_mesh(fitted.mesh);
         #[cfg(feature = "gpu")]
-        {
+        if self.gpu.is_some() {
+            // (After a fall back to the CPU the kept device copy is dropped instead.)
             self.resident = fitted.device;
         }
     }

@@ -1,6 +1,7 @@
-//! Parallel edge splits (paper §5.3, Algorithm 2): compaction of the split list, new vertices
-//! computed in parallel from their four neighbours (positions by eq. 2 / eq. 7–9, altitudes by
-//! step 6 and eq. 10–12), then the topology changes.
+//! Parallel edge splits (paper §5.3, Algorithm 2): compaction of the split list, then one
+//! parallel pass in which each split computes its new vertex from its four neighbours
+//! (positions by eq. 2 / eq. 7–9, altitudes by step 6 and eq. 10–12) and makes the topology
+//! change.
 
 use crate::mesh::altitude::split_vertex;
 use crate::mesh::Mesh;

@@ -5,8 +5,8 @@
 //! collapse its vertex, four edges and four faces, and no two operations of a batch own the same
 //! entity. What neighbours can share is an outer edge, of which each operation relinks only the
 //! face slot of its own face, and a corner vertex, whose edge link only the operation that owns
-//! the linked edge moves. Those two writes are single-word atomic stores (and the relink reads
-//! the slot atomically); every other access touches owned entities or reads the other fields of
+//! the linked edge moves. Those two writes are single-word atomic stores (and both read the word
+//! atomically first); every other access touches owned entities or reads the other fields of
 //! corner vertices, which no operation of a batch changes.
 
 use super::prefetch::{prefetch, prefetch_vertex};

@@ -56,7 +56,8 @@ fn sorted_order<T: Sync>(items: &[T], buckets: usize, key: impl Fn(&T) -> Option
     for b in 0..buckets {
         let bucket = &mut order[start[b] as usize..start[b + 1] as usize];
         if bucket.len() > 1 {
-            bucket.sort_unstable_by_key(|&i| keys[i as usize].1);
+            // (Ties, which only a mesh with a doubled edge or face has, go by old id.)
+            bucket.sort_unstable_by_key(|&i| (keys[i as usize].1, i));
         }
     }
     order

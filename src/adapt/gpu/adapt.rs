@@ -143,8 +143,9 @@ impl Adapter {
     }
 
     /// Makes a device-side copy of `kept` (the device copy of a mesh equal to the host mesh
-    /// just set) the device copy of the mesh, so the next run starts without an upload. On a
-    /// device failure the run uploads the mesh as usual.
+    /// just set) the device copy of the mesh, so the next run starts without an upload. When
+    /// no copy can be made the run uploads the mesh as usual (a device failure during the copy
+    /// shows in the run, which then falls back to the CPU).
     pub(crate) fn resume_device_mesh(&mut self, kept: &Resident) {
         let (Some(gpu), Some(dm)) = (&self.gpu, &kept.mesh) else {
             return;
