@@ -99,12 +99,11 @@ impl Mesh {
     /// Splits many ready edges at once (each the refinement edge of both its faces, so no two
     /// share a face; a batch holds each edge once), in parallel: the `i`-th split gets the ids
     /// of [`Mesh::split_ids`] and the new vertex and edge kinds `make` computes from its
-    /// [`Diamond`]. Each split reads its
-    /// diamond once, then computes and writes while it is in cache. It owns its edge, its two
-    /// faces and its new slots; the only entities two splits can share are an outer edge (each
-    /// relinks the face slot of its own face) and a corner vertex (only the split whose edge it
-    /// points to moves its edge link), so those two writes are single-word atomic stores and
-    /// everything else is plain. Returns the number of splits.
+    /// [`Diamond`]. Each split reads its diamond once, then computes and writes while it is in
+    /// cache. It owns its edge, its two faces and its new slots; the only entities two splits
+    /// can share are an outer edge (each relinks the face slot of its own face) and a corner
+    /// vertex (only the split whose edge it points to moves its edge link), so those two writes
+    /// are single-word atomic stores and everything else is plain. Returns the number of splits.
     ///
     /// # Panics
     /// When an edge is not ready (the mesh is then left inconsistent: a caller's bug).
