@@ -27,6 +27,12 @@ fn relink(e: u32, old: u32, new_face: u32) {
 }
 
 // Moves vertex `v`'s edge link from `gone` to `keep` if it points to `gone`.
+// The end of edge `e` that is not `v`.
+fn far_end(e: u32, v: u32) -> u32 {
+    let first = edges[e].v[0];
+    return select(first, edges[e].v[1], first == v);
+}
+
 fn move_link(v: u32, gone: u32, keep: u32) {
     if vertices[v].edge == gone {
         vertices[v].edge = keep;
@@ -54,16 +60,16 @@ fn collapse_vertices(@builtin(global_invocation_id) id: vec3<u32>) {
     let x4 = faces[f4];
     let e3 = x3.e[2];
     let a = edge1.v[0];
-    let b = x3.v[1];
-    let t = x1.v[1];
-    let d = x2.v[2];
+    let b = far_end(e3, m);
+    let t = far_end(e2, m);
+    let d = far_end(e4, m);
     let bt = x3.e[0];
     let ta = x1.e[0];
     let ad = x2.e[0];
     let db = x4.e[0];
 
-    faces[f1] = Face(array<u32, 3>(t, a, b), array<u32, 3>(e1, bt, ta), x1.kind);
-    faces[f2] = Face(array<u32, 3>(d, b, a), array<u32, 3>(e1, ad, db), x2.kind);
+    faces[f1] = Face(array<u32, 3>(e1, bt, ta), x1.kind);
+    faces[f2] = Face(array<u32, 3>(e1, ad, db), x2.kind);
     relink(bt, f3, f1);
     relink(db, f4, f2);
     let k1 = edge_kind(edge1);
@@ -81,8 +87,8 @@ fn collapse_vertices(@builtin(global_invocation_id) id: vec3<u32>) {
     edges[e2].v = array<u32, 2>(DEAD, DEAD);
     edges[e3].v = array<u32, 2>(DEAD, DEAD);
     edges[e4].v = array<u32, 2>(DEAD, DEAD);
-    faces[f3].v = array<u32, 3>(DEAD, DEAD, DEAD);
-    faces[f4].v = array<u32, 3>(DEAD, DEAD, DEAD);
+    faces[f3].e = array<u32, 3>(DEAD, DEAD, DEAD);
+    faces[f4].e = array<u32, 3>(DEAD, DEAD, DEAD);
     let centre = (position(a) + position(b)) * f64(0.5);
     let lod = vertices[m].parent_lod;
     wants[e1] = select(0u, 1u, wants_split(f64(lod_len(lod)), centre, f64(lod_radius(lod)), kind == KIND_SEA));

@@ -49,7 +49,7 @@ fn live_edges(@builtin(global_invocation_id) id: vec3<u32>) {
 fn live_faces(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = item(id);
     if i < grid.items {
-        map[i] = select(0u, 1u, old_faces[i].v[0] != DEAD);
+        map[i] = select(0u, 1u, old_faces[i].e[0] != DEAD);
     }
 }
 
@@ -126,7 +126,6 @@ fn move_faces(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     var x = old_faces[i];
-    x.v = array<u32, 3>(new_vertex(x.v[0]), new_vertex(x.v[1]), new_vertex(x.v[2]));
     x.e = array<u32, 3>(new_edge(x.e[0]), new_edge(x.e[1]), new_edge(x.e[2]));
     new_faces[fmap[i]] = x;
 }

@@ -27,8 +27,9 @@ struct Edge {
     bits: u32,
 }
 
+// Corners are not stored: `e[i]` is the edge opposite corner `i`, and the stages that need a
+// corner take it from the far end of one of these edges (`Mesh::corners`).
 struct Face {
-    v: array<u32, 3>,
     e: array<u32, 3>,
     // kind (u8), padding (3 bytes)
     kind: u32,

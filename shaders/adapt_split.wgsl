@@ -438,6 +438,12 @@ fn relink(e: u32, old: u32, new_face: u32) {
     }
 }
 
+// The end of edge `e` that is not `v`.
+fn far_end(e: u32, v: u32) -> u32 {
+    let first = edges[e].v[0];
+    return select(first, edges[e].v[1], first == v);
+}
+
 @compute @workgroup_size(64)
 fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x + id.y * p.row;
@@ -448,7 +454,10 @@ fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let parent = edges[e1];
     let old1 = faces[parent.f[0]];
     let old2 = faces[parent.f[1]];
-    let s = Site(e1, parent.v[0], parent.v[1], old1.v[0], old2.v[0], parent.f[0], parent.f[1]);
+    // The apexes: f1 = (t, a, b) holds (b, t) in slot 1, f2 = (d, b, a) holds (d, b) in slot 2.
+    let t = far_end(old1.e[1], parent.v[1]);
+    let d = far_end(old2.e[2], parent.v[1]);
+    let s = Site(e1, parent.v[0], parent.v[1], t, d, parent.f[0], parent.f[1]);
     let seed = vertices[s.a].seed + vertices[s.b].seed;
     let kind = edge_kind(parent);
     let at = split_position(s, seed, kind);
@@ -471,17 +480,16 @@ fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let pb = pos(s.b);
     let pm = triple(made.v.pos);
     let parent_mid = (pa + pb) * p.half;
-    let t = s.t;
-    let d = s.d;
     let a = s.a;
     let b = s.b;
     let f1 = s.f1;
     let f2 = s.f2;
 
-    faces[f1] = Face(array<u32, 3>(m, t, a), array<u32, 3>(old1.e[2], e1, e2), old1.kind);
-    faces[f2] = Face(array<u32, 3>(m, a, d), array<u32, 3>(old2.e[1], e4, e1), old2.kind);
-    faces[f3] = Face(array<u32, 3>(m, b, t), array<u32, 3>(old1.e[1], e2, e3), old1.kind);
-    faces[f4] = Face(array<u32, 3>(m, d, b), array<u32, 3>(old2.e[2], e3, e4), old2.kind);
+    // f1 = (m, t, a), f2 = (m, a, d), f3 = (m, b, t), f4 = (m, d, b).
+    faces[f1] = Face(array<u32, 3>(old1.e[2], e1, e2), old1.kind);
+    faces[f2] = Face(array<u32, 3>(old2.e[1], e4, e1), old2.kind);
+    faces[f3] = Face(array<u32, 3>(old1.e[1], e2, e3), old1.kind);
+    faces[f4] = Face(array<u32, 3>(old2.e[2], e3, e4), old2.kind);
     let k = made.kinds;
     edges[e1] = Edge(array<u32, 2>(a, m), array<u32, 2>(f1, f2), child_lod(parent.lod, pa, pm, parent_mid), level | (k[0] << 16u));
     edges[e2] = Edge(array<u32, 2>(m, t), array<u32, 2>(f1, f3), child_lod(parent.lod, pm, pos(t), parent_mid), level | (k[1] << 16u));

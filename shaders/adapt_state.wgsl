@@ -43,6 +43,14 @@ fn quiet(x: Face) -> bool {
     return demanded[x.e[0]] == 0u && demanded[x.e[1]] == 0u && demanded[x.e[2]] == 0u;
 }
 
+// The end of edge `e` that is not `v`.
+fn far_end(e: u32, v: u32) -> u32 {
+    let first = edges[e].v[0];
+    return select(first, edges[e].v[1], first == v);
+}
+
+// `Mesh::collapse_site`: the four faces still those of m's split, each holding its edges to m
+// in the slots that make m its newest corner.
 fn collapsible(m: u32) -> bool {
     let vert = vertices[m];
     if (vertex_flags(vert) & FLAG_REFINED) == 0u || vert.edge >= DEAD {
@@ -55,14 +63,14 @@ fn collapsible(m: u32) -> bool {
     }
     let x1 = faces[edge1.f[0]];
     let x2 = faces[edge1.f[1]];
-    if x1.v[0] != m || x2.v[0] != m {
+    if x1.e[1] != e1 || x2.e[2] != e1 {
         return false;
     }
     let e2 = x1.e[2];
     let x3 = faces[edges[e2].f[1]];
     let e4 = x2.e[1];
     let x4 = faces[edges[e4].f[0]];
-    if x3.v[0] != m || x4.v[0] != m || x3.e[2] != x4.e[1] || x4.e[2] != e4 {
+    if x3.e[1] != e2 || x4.e[2] != e4 || x3.e[2] != x4.e[1] {
         return false;
     }
     let level = edge_level(edge1);
@@ -72,7 +80,7 @@ fn collapsible(m: u32) -> bool {
     if !(quiet(x1) && quiet(x2) && quiet(x3) && quiet(x4)) {
         return false;
     }
-    let centre = (position(edge1.v[0]) + position(x3.v[1])) * f64(0.5);
+    let centre = (position(edge1.v[0]) + position(far_end(x3.e[2], m))) * f64(0.5);
     let sea = edge_kind(edge1) == KIND_SEA;
     return !wants_split(f64(lod_len(vert.parent_lod)), centre, f64(lod_radius(vert.parent_lod)), sea);
 }

@@ -34,10 +34,10 @@ type Canonical = (Vec<[[u64; 3]; 3]>, Vec<([u64; 3], u32, u32)>);
 fn canonical(m: &Mesh) -> Canonical {
     let key = |v: u32| m.vertices[v as usize].pos.map(f64::to_bits);
     let mut tris: Vec<[[u64; 3]; 3]> = m
-        .faces
-        .iter()
+        .triangles()
+        .into_iter()
         .map(|f| {
-            let k = f.v.map(key);
+            let k = f.map(key);
             // Rotate so the smallest corner comes first, keeping the winding.
             let i = (0..3).min_by_key(|&i| k[i]).unwrap();
             [k[i], k[(i + 1) % 3], k[(i + 2) % 3]]
@@ -293,7 +293,7 @@ fn centimetre_edges_at_earth_radius() {
     for _ in 0..400 {
         let f = (0..m.faces.len() as u32)
             .min_by(|&a, &b| {
-                let c = |f: u32| m.faces[f as usize].v.iter().map(|&v| m.pos(v)).sum::<DVec3>().distance(target * 3.0);
+                let c = |f: u32| m.corners(f).iter().map(|&v| m.pos(v)).sum::<DVec3>().distance(target * 3.0);
                 c(a).total_cmp(&c(b))
             })
             .unwrap();

@@ -20,7 +20,7 @@ pub fn direction(lat_deg: f64, lon_deg: f64) -> DVec3 {
 
 /// Centroid of a face.
 pub fn face_centre(mesh: &Mesh, f: u32) -> DVec3 {
-    mesh.faces[f as usize].v.iter().map(|&v| mesh.pos(v)).sum::<DVec3>() / 3.0
+    mesh.corners(f).iter().map(|&v| mesh.pos(v)).sum::<DVec3>() / 3.0
 }
 
 /// Grows `count` continents from random start faces until land covers `land_percent` of the
@@ -44,7 +44,7 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
     let add = |mesh: &mut Mesh, owner: &mut [u16], frontier: &mut Vec<u32>, f: u32, c: u16| {
         let face = mesh.faces[f as usize];
         mesh.faces[f as usize].kind = FaceKind::Land;
-        for &v in &face.v {
+        for v in mesh.corners(f) {
             owner[v as usize] = c;
         }
         for &e in &face.e {
@@ -60,8 +60,7 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
     for c in 0..count.min(u16::MAX as u32 - 1) as u16 {
         for _ in 0..10_000 {
             let f = rng.below(nf) as u32;
-            let face = mesh.faces[f as usize];
-            if face.v.iter().all(|&v| owner[v as usize] == FREE) {
+            if mesh.corners(f).iter().all(|&v| owner[v as usize] == FREE) {
                 let mut list = Vec::new();
                 land += add(mesh, &mut owner, &mut list, f, c);
                 frontier.push(list);
@@ -84,8 +83,9 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
         if face.kind == FaceKind::Land {
             continue;
         }
-        let free = face.v.iter().filter(|&&v| owner[v as usize] == FREE).count();
-        let ours = face.v.iter().filter(|&&v| owner[v as usize] == c as u16).count();
+        let corners = mesh.corners(f);
+        let free = corners.iter().filter(|&&v| owner[v as usize] == FREE).count();
+        let ours = corners.iter().filter(|&&v| owner[v as usize] == c as u16).count();
         if free <= 1 && free + ours == 3 {
             let mut list = std::mem::take(&mut frontier[c]);
             land += add(mesh, &mut owner, &mut list, f, c as u16);
@@ -163,13 +163,14 @@ pub fn count_continents(mesh: &Mesh) -> usize {
         x
     }
     let mut on_land = vec![false; n];
-    for f in &mesh.faces {
-        if f.kind == FaceKind::Land {
-            for &v in &f.v {
+    for (f, face) in mesh.faces.iter().enumerate() {
+        if face.kind == FaceKind::Land {
+            let corners = mesh.corners(f as u32);
+            for &v in &corners {
                 on_land[v as usize] = true;
             }
-            let r0 = find(&mut parent, f.v[0]);
-            for &v in &f.v[1..] {
+            let r0 = find(&mut parent, corners[0]);
+            for &v in &corners[1..] {
                 let r = find(&mut parent, v);
                 parent[r as usize] = r0;
             }

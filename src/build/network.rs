@@ -120,7 +120,7 @@ impl RiverGraph {
             let face = &mesh.faces[f as usize];
             if face.kind == FaceKind::Land {
                 let a = mesh.face_area_vector(f).length() / 3.0;
-                for &v in &face.v {
+                for v in mesh.corners(f) {
                     own[v as usize] += a;
                 }
             }
@@ -183,7 +183,7 @@ impl RiverGraph {
                 continue;
             }
             let a = mesh.face_area_vector(f).length() / 3.0;
-            for &v in &face.v {
+            for v in mesh.corners(f) {
                 let flags = mesh.vertices[v as usize].flags;
                 let ok = if flags.contains(VertexFlags::COAST) {
                     true

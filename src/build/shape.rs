@@ -158,7 +158,7 @@ mod tests {
         let near = DVec3::new(1.0, 0.2, 0.3).normalize();
         refine_where(&mut m, 50_000, |m, f| {
             let face = &m.faces[f as usize];
-            let c = face.v.iter().map(|&v| m.pos(v)).sum::<DVec3>().normalize();
+            let c = m.corners(f).iter().map(|&v| m.pos(v)).sum::<DVec3>().normalize();
             c.dot(near) > 0.98 && m.edge_length(face.e[0]) > 20_000.0
         });
         m.validate().unwrap();

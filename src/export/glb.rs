@@ -93,9 +93,7 @@ pub fn terrain_mesh_with_normals(
         };
         out.colors.push([r, g, b, 255]);
     }
-    for f in &mesh.faces {
-        out.indices.extend_from_slice(&f.v);
-    }
+    out.indices = mesh.triangles().into_iter().flatten().collect();
     out
 }
 

@@ -30,10 +30,11 @@ pub fn surface_normals(mesh: &Mesh) -> Vec<DVec3> {
     use rayon::prelude::*;
     // Face vectors in parallel, then summed per vertex in face order (the same bits as a serial
     // pass), then normalised in parallel.
-    let areas: Vec<DVec3> = (0..mesh.faces.len() as u32).into_par_iter().map(|f| mesh.face_area_vector(f)).collect();
+    let triangles = mesh.triangles();
+    let areas: Vec<DVec3> = triangles.par_iter().map(|&t| mesh.triangle_area_vector(t)).collect();
     let mut acc = vec![DVec3::ZERO; mesh.vertices.len()];
-    for (face, &n) in mesh.faces.iter().zip(&areas) {
-        for &v in &face.v {
+    for (corners, &n) in triangles.iter().zip(&areas) {
+        for &v in corners {
             acc[v as usize] += n;
         }
     }

@@ -111,7 +111,7 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
             let wts = raster.weights[i];
             let mut alt = 0.0;
             let mut normal = DVec3::ZERO;
-            for (&v, &wt) in face.v.iter().zip(&wts) {
+            for (&v, &wt) in mesh.corners(raster.faces[i]).iter().zip(&wts) {
                 let (v, wt) = (v as usize, wt as f64);
                 alt += wt * (mesh.vertices[v].ground as f64 - sea);
                 normal += wt * normals[v];
@@ -166,11 +166,13 @@ mod tests {
         let img = img.to_rgb8();
         assert_eq!(img.dimensions(), (w, h));
         let mut land_checked = 0;
-        for f in &planet.mesh.faces {
-            let c: DVec3 = f.v.iter().map(|&v| planet.mesh.pos(v)).sum::<DVec3>() / 3.0;
+        for (i, f) in planet.mesh.faces.iter().enumerate() {
+            let corners = planet.mesh.corners(i as u32);
+            let c: DVec3 = corners.iter().map(|&v| planet.mesh.pos(v)).sum::<DVec3>() / 3.0;
             let (lat, lon) = lat_lon(c);
             let px = rgb_at(&img, lat, lon);
-            if f.kind == FaceKind::Sea && f.v.iter().all(|&v| planet.mesh.vertices[v as usize].flags.is_pure_sea()) {
+            if f.kind == FaceKind::Sea && corners.iter().all(|&v| planet.mesh.vertices[v as usize].flags.is_pure_sea())
+            {
                 assert!(px[2] > px[0], "sea is blue at {lat},{lon}: {px:?}");
             }
             if f.kind == FaceKind::Land && px[2] <= px[1] {

@@ -42,7 +42,7 @@ pub struct SphereRaster {
 
 /// Edge-plane normals `B×C, C×A, A×B` of a face (planet frame, unnormalised).
 fn edge_planes(mesh: &Mesh, f: usize) -> [DVec3; 3] {
-    let [a, b, c] = mesh.faces[f].v.map(|v| mesh.pos(v));
+    let [a, b, c] = mesh.corners(f as u32).map(|v| mesh.pos(v));
     [b.cross(c), c.cross(a), a.cross(b)]
 }
 
@@ -63,7 +63,7 @@ fn wrap180(d: f64) -> f64 {
 
 /// Latitude range `[lo, hi]` and longitude interval (`None` = all longitudes) of a face.
 fn face_bounds(mesh: &Mesh, f: usize, n: &[DVec3; 3]) -> (f64, f64, Option<(f64, f64)>) {
-    let u = mesh.faces[f].v.map(|v| mesh.pos(v).normalize());
+    let u = mesh.corners(f as u32).map(|v| mesh.pos(v).normalize());
     let mut lo = 90.0f64;
     let mut hi = -90.0f64;
     for p in &u {
@@ -191,7 +191,7 @@ impl SphereRaster {
             .par_iter()
             .zip(&self.weights)
             .map(|(&f, w)| {
-                let v = mesh.faces[f as usize].v;
+                let v = mesh.corners(f);
                 (0..3).map(|k| w[k] as f64 * value(v[k] as usize)).sum::<f64>() as f32
             })
             .collect()

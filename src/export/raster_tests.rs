@@ -31,7 +31,7 @@ fn check_against_brute_force(mesh: &Mesh, w: u32, h: u32) {
             assert!(wts.iter().all(|&x| (0.0..=1.0).contains(&x)));
             assert!((wts.iter().sum::<f32>() - 1.0).abs() < 1e-5);
             // The weights reproduce the pixel's direction on the face's plane.
-            let p: DVec3 = (0..3).map(|k| wts[k] as f64 * mesh.pos(mesh.faces[r.faces[i] as usize].v[k])).sum();
+            let p: DVec3 = (0..3).map(|k| wts[k] as f64 * mesh.pos(mesh.corners(r.faces[i])[k])).sum();
             assert!(p.normalize().dot(d) > 1.0 - 1e-9, "pixel {col},{row}: weights point elsewhere");
         }
     }
@@ -53,7 +53,7 @@ fn large_faces_poles_and_antimeridian() {
     for (i, &f) in r.faces.iter().enumerate() {
         let d = r.direction(i as u32 % 64, i as u32 / 64);
         // Every corner of the pixel's octant face lies on the pixel's side of each axis.
-        for &v in &mesh.faces[f as usize].v {
+        for v in mesh.corners(f) {
             let p = mesh.pos(v);
             for k in 0..3 {
                 assert!(p[k] * d[k] >= 0.0, "pixel {i} in the wrong octant");
@@ -119,7 +119,7 @@ fn landmask_of_a_hand_made_mesh() {
     let mut mesh = octahedron(6_371_000.0, 5);
     refine_to(&mut mesh, 200, 5);
     for f in 0..mesh.faces.len() {
-        let z: f64 = mesh.faces[f].v.iter().map(|&v| mesh.pos(v).z).sum();
+        let z: f64 = mesh.corners(f as u32).iter().map(|&v| mesh.pos(v).z).sum();
         mesh.faces[f].kind = if z > 0.0 { FaceKind::Land } else { FaceKind::Sea };
     }
     classify(&mut mesh);
@@ -168,9 +168,9 @@ fn elevation_tiff_is_georeferenced_and_matches_the_mesh() {
 
     // Near any vertex, the value lies within the range of the vertex's one-ring.
     let mut ring: Vec<(f64, f64)> = vec![(f64::INFINITY, f64::NEG_INFINITY); mesh.vertices.len()];
-    for f in &mesh.faces {
-        for &v in &f.v {
-            for &u in &f.v {
+    for f in mesh.triangles() {
+        for &v in &f {
+            for &u in &f {
                 let e = &mut ring[v as usize];
                 *e = (e.0.min(alt(u as usize)), e.1.max(alt(u as usize)));
             }

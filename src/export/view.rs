@@ -28,11 +28,11 @@ pub fn water_mesh(mesh: &Mesh, params: &Params, origin: DVec3) -> GlbMesh {
     let mut out = GlbMesh { translation: Some(to_gltf_axes(origin.to_array())), ..GlbMesh::default() };
     let mut slot = vec![u32::MAX; mesh.vertices.len()];
     let up = to_gltf_axes(origin.normalize_or(DVec3::X).to_array()).map(|x| x as f32);
-    for f in &mesh.faces {
-        if !f.v.iter().any(|&v| mesh.vertices[v as usize].submerged()) {
+    for corners in mesh.triangles() {
+        if !corners.iter().any(|&v| mesh.vertices[v as usize].submerged()) {
             continue;
         }
-        for &v in &f.v {
+        for &v in &corners {
             if slot[v as usize] == u32::MAX {
                 let vert = &mesh.vertices[v as usize];
                 let level = vert.water.max(vert.ground) as f64;

@@ -58,16 +58,17 @@ impl Buffers {
         }
     }
 
-    /// Asks for the cache lines that split `k + 16`, `k + 8` and `k + 4` of `chunk` will read.
-    /// Splits wait on memory, not arithmetic: each reads its edge, then the edge's faces and
-    /// ends, then the apexes and outer edges those faces name, all scattered over the buffers.
-    /// So while split `k` runs, the edge of split `k + 16` is requested, the faces and ends of
-    /// `k + 8` (whose edge has arrived by then), and the apexes and outer edges of `k + 4`.
+    /// Asks for the cache lines that split `k + 16`, `k + 8`, `k + 4` and `k + 2` of `chunk`
+    /// will read. Splits wait on memory, not arithmetic: each reads its edge, then the edge's
+    /// faces and ends, then the outer edges those faces name, then the apexes at their far ends,
+    /// all scattered over the buffers. So while split `k` runs, the edge of split `k + 16` is
+    /// requested, the faces and ends of `k + 8` (whose edge has arrived by then), the outer
+    /// edges of `k + 4` and the apexes of `k + 2`.
     ///
     /// # Safety
     /// `chunk` holds ready edges of a batch that this thread splits in order, and split `k` is
     /// the next: the entities read here belong to later splits of this thread, which no other
-    /// thread writes.
+    /// thread writes, or are outer edges' end points, which no split of a batch changes.
     pub unsafe fn prefetch_split(&self, chunk: &[u32], k: usize) {
         if let Some(&e) = chunk.get(k + 16) {
             prefetch(self.e.add(e as usize));
@@ -82,14 +83,32 @@ impl Buffers {
             }
         }
         if let Some(&e) = chunk.get(k + 4) {
-            let [f1, f2] = addr_of!((*self.e.add(e as usize)).f).read();
-            let (x1, x2) = (self.f.add(f1 as usize), self.f.add(f2 as usize));
-            for v in [addr_of!((*x1).v[0]).read(), addr_of!((*x2).v[0]).read()] {
-                prefetch_vertex(self.v.add(v as usize));
-            }
-            for outer in [addr_of!((*x1).e[1]).read(), addr_of!((*x2).e[2]).read()] {
+            for outer in self.outer_edges(e) {
                 prefetch(self.e.add(outer as usize));
             }
+        }
+        if let Some(&e) = chunk.get(k + 2) {
+            let b = addr_of!((*self.e.add(e as usize)).v[1]).read();
+            for outer in self.outer_edges(e) {
+                prefetch_vertex(self.v.add(self.far_end(outer, b) as usize));
+            }
+        }
+    }
+
+    /// The outer edges `bt` (of `f1`) and `db` (of `f2`) of ready edge `e`'s diamond.
+    unsafe fn outer_edges(&self, e: u32) -> [u32; 2] {
+        let [f1, f2] = addr_of!((*self.e.add(e as usize)).f).read();
+        [addr_of!((*self.f.add(f1 as usize)).e[1]).read(), addr_of!((*self.f.add(f2 as usize)).e[2]).read()]
+    }
+
+    /// The end of edge `e` that is not `v`. End points are the one part of an outer edge that
+    /// no split of a batch writes.
+    unsafe fn far_end(&self, e: u32, v: u32) -> u32 {
+        let ends = addr_of!((*self.e.add(e as usize)).v).read();
+        if ends[0] == v {
+            ends[1]
+        } else {
+            ends[0]
         }
     }
 
@@ -121,7 +140,9 @@ impl Buffers {
         let [f1, f2] = edge.f;
         let faces = [self.f.add(f1 as usize).read(), self.f.add(f2 as usize).read()];
         assert!(faces[0].e[0] == e && faces[1].e[0] == e, "edge {e} is not ready to split");
-        let site = SplitSite { edge: e, a: edge.v[0], b: edge.v[1], t: faces[0].v[0], d: faces[1].v[0], f1, f2 };
+        let [a, b] = edge.v;
+        let (t, d) = (self.far_end(faces[0].e[1], b), self.far_end(faces[1].e[2], b));
+        let site = SplitSite { edge: e, a, b, t, d, f1, f2 };
         Diamond { site, edge, faces, corners: [site.a, site.b, site.t, site.d].map(|v| self.corner(v)), radius }
     }
 
@@ -147,11 +168,10 @@ impl Buffers {
         let parent_mid = (pa + pb) * 0.5;
 
         // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
-        let face = |v: [u32; 3], e: [u32; 3], kind| Face { v, e, kind, _pad: [0; 3] };
-        self.f.add(f1 as usize).write(face([m, t, a], [old1.e[2], e1, e2], old1.kind));
-        self.f.add(f2 as usize).write(face([m, a, d], [old2.e[1], e4, e1], old2.kind));
-        self.f.add(f3 as usize).write(face([m, b, t], [old1.e[1], e2, e3], old1.kind));
-        self.f.add(f4 as usize).write(face([m, d, b], [old2.e[2], e3, e4], old2.kind));
+        self.f.add(f1 as usize).write(Face::new([old1.e[2], e1, e2], old1.kind));
+        self.f.add(f2 as usize).write(Face::new([old2.e[1], e4, e1], old2.kind));
+        self.f.add(f3 as usize).write(Face::new([old1.e[1], e2, e3], old1.kind));
+        self.f.add(f4 as usize).write(Face::new([old2.e[2], e3, e4], old2.kind));
         let edge = |v: [u32; 2], f: [u32; 2], kind, p: DVec3, q: DVec3| {
             let length = p.distance(q);
             let offset = ((p + q) * 0.5).distance(parent_mid);
@@ -180,11 +200,13 @@ impl Buffers {
     /// vertex, edges or faces.
     pub unsafe fn collapse(&self, site: &CollapseSite) {
         let CollapseSite { v: m, e: [e1, e2, e3, e4], f: [f1, f2, f3, f4], a, b, t, d } = *site;
+        // Faces before: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
         let face = |f: u32| self.f.add(f as usize);
         let (x1, x2, x3, x4) = (face(f1).read(), face(f2).read(), face(f3).read(), face(f4).read());
         let (bt, ta, ad, db) = (x3.e[0], x1.e[0], x2.e[0], x4.e[0]);
-        face(f1).write(Face { v: [t, a, b], e: [e1, bt, ta], ..x1 });
-        face(f2).write(Face { v: [d, b, a], e: [e1, ad, db], ..x2 });
+        // After: f1 = (t, a, b), f2 = (d, b, a).
+        face(f1).write(Face { e: [e1, bt, ta], ..x1 });
+        face(f2).write(Face { e: [e1, ad, db], ..x2 });
         self.relink(bt, f3, f1);
         self.relink(db, f4, f2);
 
@@ -202,7 +224,7 @@ impl Buffers {
             addr_of_mut!((*self.e.add(e as usize)).v).write([DEAD; 2]);
         }
         for f in [f3, f4] {
-            addr_of_mut!((*self.f.add(f as usize)).v).write([DEAD; 3]);
+            addr_of_mut!((*self.f.add(f as usize)).e).write([DEAD; 3]);
         }
     }
 }

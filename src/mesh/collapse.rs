@@ -1,7 +1,8 @@
 //! Vertex collapse (paper §3, Figure 2; §5.4): the exact inverse of an edge split.
 //!
 //! A vertex `m` may be collapsed when it was made by a split (not a base vertex) and its four
-//! faces are still the four faces that split made: each has `m` as its newest vertex. Then the
+//! faces are still the four faces that split made: each has `m` as its newest vertex, which a
+//! face tells by the slots its edges to `m` take. Then the
 //! incident edges `e1..e4` necessarily share one split level, the paper's collapse condition.
 
 use super::batch::Buffers;
@@ -32,23 +33,26 @@ impl Mesh {
         if edge1.v[1] != m {
             return None;
         }
+        // The four faces still those of the split: f1 = (m, t, a) left of e1 = (a, m) holds e1
+        // in slot 1, f2 = (m, a, d) on its right in slot 2, f3 = (m, b, t) holds e2 = (m, t)
+        // in slot 1 and f4 = (m, d, b) holds e4 = (m, d) in slot 2; each slot puts m in
+        // corner 0 (see `Face`), and f3 and f4 share e3 = (m, b).
         let (f1, f2) = (edge1.f[0], edge1.f[1]);
         let (x1, x2) = (&self.faces[f1 as usize], &self.faces[f2 as usize]);
-        if x1.v[0] != m || x2.v[0] != m {
+        if x1.e[1] != e1 || x2.e[2] != e1 {
             return None;
         }
-        let e2 = x1.e[2];
-        let f3 = self.edges[e2 as usize].f[1];
-        let x3 = &self.faces[f3 as usize];
-        let e4 = x2.e[1];
-        let f4 = self.edges[e4 as usize].f[0];
-        let x4 = &self.faces[f4 as usize];
-        if x3.v[0] != m || x4.v[0] != m || x3.e[2] != x4.e[1] || x4.e[2] != e4 {
+        let (e2, e4) = (x1.e[2], x2.e[1]);
+        let (edge2, edge4) = (&self.edges[e2 as usize], &self.edges[e4 as usize]);
+        let (f3, f4) = (edge2.f[1], edge4.f[0]);
+        let (x3, x4) = (&self.faces[f3 as usize], &self.faces[f4 as usize]);
+        if x3.e[1] != e2 || x4.e[2] != e4 || x3.e[2] != x4.e[1] {
             return None;
         }
         let e3 = x3.e[2];
+        let edge3 = &self.edges[e3 as usize];
         let level = edge1.level;
-        if [e2, e3, e4].iter().any(|&e| self.edges[e as usize].level != level) {
+        if [edge2, edge3, edge4].iter().any(|e| e.level != level) {
             return None;
         }
         Some(CollapseSite {
@@ -56,9 +60,9 @@ impl Mesh {
             e: [e1, e2, e3, e4],
             f: [f1, f2, f3, f4],
             a: edge1.v[0],
-            b: x3.v[1],
-            t: x1.v[1],
-            d: x2.v[2],
+            b: edge3.other(m),
+            t: edge2.other(m),
+            d: edge4.other(m),
         })
     }
 

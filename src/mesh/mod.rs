@@ -79,13 +79,17 @@ pub struct Edge {
     pub _pad: u8,
 }
 
-/// One triangle (Table 3, "active faces").
+/// One triangle (Table 3, "active faces"): 16 bytes.
+///
+/// A face names its edges only. Its corners `v0, v1, v2` (counter-clockwise seen from outside
+/// the planet, `v0` the newest vertex) follow from them: `e[i]` is the edge opposite corner
+/// `i`, running `v[i+1] -> v[i+2]` as the face walks it, so `e[0]` gives `v1, v2` (in its own
+/// order when the face is on its left, reversed otherwise) and `e[1]` joins `v2` to `v0`
+/// (see [`Mesh::corners`]). Storing the corners too would cost 12 bytes a face, 24 a vertex.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
 pub struct Face {
-    /// Corners, counter-clockwise seen from outside the planet; `v[0]` is the newest vertex.
-    pub v: [u32; 3],
-    /// `e[i]` is the edge opposite `v[i]`; `e[0]` is the refinement edge.
+    /// `e[i]` is the edge opposite corner `i`; `e[0]` is the refinement edge.
     pub e: [u32; 3],
     pub kind: FaceKind,
     pub _pad: [u8; 3],
@@ -137,10 +141,8 @@ impl Edge {
 }
 
 impl Face {
-    /// Slot (0..3) of vertex `v` in this face.
-    #[inline]
-    pub fn slot(&self, v: u32) -> Option<usize> {
-        self.v.iter().position(|&x| x == v)
+    pub fn new(e: [u32; 3], kind: FaceKind) -> Face {
+        Face { e, kind, _pad: [0; 3] }
     }
 }
 
@@ -154,11 +156,26 @@ pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
 // The WGSL twins of these structs (`shaders/adapt_mesh.wgsl`) spell the same layouts out.
-const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 28);
+const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 16);
 
 impl Mesh {
     pub fn pos(&self, v: u32) -> DVec3 {
         self.vertices[v as usize].p()
+    }
+
+    /// Corners `[v0, v1, v2]` of face `f` (see [`Face`]): counter-clockwise, `v0` the newest.
+    #[inline]
+    pub fn corners(&self, f: u32) -> [u32; 3] {
+        let face = &self.faces[f as usize];
+        let e0 = &self.edges[face.e[0] as usize];
+        let [v1, v2] = if e0.f[0] == f { e0.v } else { [e0.v[1], e0.v[0]] };
+        [self.edges[face.e[1] as usize].other(v2), v1, v2]
+    }
+
+    /// The corners of every face, in face order (the triangle list of the mesh).
+    pub fn triangles(&self) -> Vec<[u32; 3]> {
+        use rayon::prelude::*;
+        (0..self.faces.len() as u32).into_par_iter().map(|f| self.corners(f)).collect()
     }
 
     /// Total buffer memory divided by the vertex count (the paper's "bytes per vertex").
@@ -167,14 +184,15 @@ impl Mesh {
         total as f64 / self.vertices.len().max(1) as f64
     }
 
-    /// Builds a mesh from corner triangles (CCW from outside, `v[0]` newest), creating the edges.
-    /// Used for the octahedron; every edge must be shared by exactly two faces.
+    /// Builds a mesh from corner triangles (CCW from outside, the first corner the newest),
+    /// creating the edges. Used for the octahedron, where every edge is shared by two faces,
+    /// and for surface patches, whose border edges have one face (the other is [`NONE`]).
     pub fn from_triangles(radius: f64, vertices: Vec<Vertex>, tris: &[[u32; 3]]) -> Mesh {
         use std::collections::HashMap;
         let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new() };
         let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
         for (fi, t) in tris.iter().enumerate() {
-            let mut face = Face { v: *t, e: [NONE; 3], kind: FaceKind::Sea, _pad: [0; 3] };
+            let mut face = Face::new([NONE; 3], FaceKind::Sea);
             for i in 0..3 {
                 // Edge opposite corner i runs from corner i+1 to corner i+2.
                 let (a, b) = (t[(i + 1) % 3], t[(i + 2) % 3]);
@@ -254,7 +272,7 @@ impl Mesh {
 
     /// Unit normal of face `f` (counter-clockwise winding), unnormalised area vector halved.
     pub fn face_area_vector(&self, f: u32) -> DVec3 {
-        self.triangle_area_vector(self.faces[f as usize].v)
+        self.triangle_area_vector(self.corners(f))
     }
 
     /// Area vector of the triangle with corners `v` (counter-clockwise): normal times area.

@@ -29,13 +29,13 @@ fn spread(x: u64) -> u64 {
     x
 }
 
-/// Old ids of the items with a key `(bucket, rank)`, in increasing key order (no two items share
+/// Old ids `0..n` of the items with a key `(bucket, rank)`, in increasing key order (no two items share
 /// a key). Buckets are below `buckets` and hold a few items each (an edge's or a face's lowest
 /// new vertex id), so this is a counting sort by bucket and then a sort of each bucket by rank,
 /// far cheaper than sorting millions of keys by comparison.
-fn sorted_order<T: Sync>(items: &[T], buckets: usize, key: impl Fn(&T) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
+fn sorted_order(n: usize, buckets: usize, key: impl Fn(u32) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
     const NO_BUCKET: u32 = u32::MAX;
-    let keys: Vec<(u32, u64)> = items.par_iter().map(|x| key(x).unwrap_or((NO_BUCKET, 0))).collect();
+    let keys: Vec<(u32, u64)> = (0..n as u32).into_par_iter().map(|x| key(x).unwrap_or((NO_BUCKET, 0))).collect();
     let mut start = vec![0u32; buckets + 1];
     for &(b, _) in &keys {
         if b != NO_BUCKET {
@@ -127,7 +127,7 @@ impl Mesh {
     pub fn compact(&mut self) {
         let (vmap, nv) = kept_order(&self.vertices, |v| v.edge == DEAD);
         let (emap, ne) = kept_order(&self.edges, |e| e.v[0] == DEAD);
-        let (fmap, nf) = kept_order(&self.faces, |f| f.v[0] == DEAD);
+        let (fmap, nf) = kept_order(&self.faces, |f| f.e[0] == DEAD);
         if (nv, ne, nf) != (self.vertices.len(), self.edges.len(), self.faces.len()) {
             self.renumber(&vmap, &emap, &fmap, (nv, ne, nf));
         }
@@ -151,13 +151,15 @@ impl Mesh {
         let vorder: Vec<u32> = vorder.into_iter().map(|(_, v)| v).collect();
         let vmap = inverse(&vorder, self.vertices.len());
         let nv = vorder.len();
-        let eorder = sorted_order(&self.edges, nv, |e| {
+        let eorder = sorted_order(self.edges.len(), nv, |e| {
+            let e = &self.edges[e as usize];
             let [a, b] = (e.v[0] != DEAD).then(|| e.v.map(|x| vmap[x as usize]))?;
             Some((a.min(b), a.max(b) as u64))
         });
         let emap = inverse(&eorder, self.edges.len());
-        let forder = sorted_order(&self.faces, nv, |f| {
-            let mut c = (f.v[0] != DEAD).then(|| f.v.map(|x| vmap[x as usize]))?;
+        let forder = sorted_order(self.faces.len(), nv, |f| {
+            let live = self.faces[f as usize].e[0] != DEAD;
+            let mut c = live.then(|| self.corners(f).map(|x| vmap[x as usize]))?;
             c.sort_unstable();
             Some((c[0], (c[1] as u64) << 32 | c[2] as u64))
         });
@@ -174,10 +176,7 @@ impl Mesh {
             x.v = x.v.map(|v| renumbered(vmap, v));
             x.f = x.f.map(|f| renumbered(fmap, f));
         });
-        self.faces = scatter(&self.faces, fmap, nf, |x| {
-            x.v = x.v.map(|v| renumbered(vmap, v));
-            x.e = x.e.map(|e| renumbered(emap, e));
-        });
+        self.faces = scatter(&self.faces, fmap, nf, |x| x.e = x.e.map(|e| renumbered(emap, e)));
     }
 }
 

@@ -49,7 +49,10 @@ impl Mesh {
         if x.e[0] != e || y.e[0] != e {
             return None;
         }
-        Some(SplitSite { edge: e, a: edge.v[0], b: edge.v[1], t: x.v[0], d: y.v[0], f1, f2 })
+        // f1 = (t, a, b) with `e[1] = (b, t)`, f2 = (d, b, a) with `e[2] = (d, b)`.
+        let [a, b] = edge.v;
+        let (t, d) = (self.edges[x.e[1] as usize].other(b), self.edges[y.e[2] as usize].other(b));
+        Some(SplitSite { edge: e, a, b, t, d, f1, f2 })
     }
 
     /// The refinement edge that must be split before `e` can be: `e` itself when it is ready.

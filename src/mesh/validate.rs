@@ -12,14 +12,22 @@ impl Mesh {
         let mut uses = vec![0u8; ne as usize];
         for (fi, f) in self.faces.iter().enumerate() {
             let fi = fi as u32;
-            if f.v.iter().any(|&v| v >= nv) || f.e.iter().any(|&e| e >= ne) {
-                return Err(format!("face {fi} references a missing vertex or edge"));
+            if f.e.iter().any(|&e| e >= ne) {
+                return Err(format!("face {fi} references a missing edge"));
             }
-            if f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2] {
+            // The corners as `Mesh::corners` derives them, then every edge checked against them.
+            let e0 = &self.edges[f.e[0] as usize];
+            let [v1, v2] = if e0.f[0] == fi { e0.v } else { [e0.v[1], e0.v[0]] };
+            let e1 = self.edges[f.e[1] as usize].v;
+            let v = [if e1[0] == v2 { e1[1] } else { e1[0] }, v1, v2];
+            if v.iter().any(|&v| v >= nv) {
+                return Err(format!("face {fi} references a missing vertex"));
+            }
+            if v[0] == v[1] || v[1] == v[2] || v[0] == v[2] {
                 return Err(format!("face {fi} repeats a vertex"));
             }
             for i in 0..3 {
-                let (a, b) = (f.v[(i + 1) % 3], f.v[(i + 2) % 3]);
+                let (a, b) = (v[(i + 1) % 3], v[(i + 2) % 3]);
                 let edge = &self.edges[f.e[i] as usize];
                 let side = if edge.v == [a, b] {
                     0
@@ -34,7 +42,7 @@ impl Mesh {
                 uses[f.e[i] as usize] += 1;
             }
             let n = self.face_area_vector(fi);
-            let centre = (self.pos(f.v[0]) + self.pos(f.v[1]) + self.pos(f.v[2])) / 3.0;
+            let centre = (self.pos(v[0]) + self.pos(v[1]) + self.pos(v[2])) / 3.0;
             if n.length() <= 0.0 || !n.is_finite() {
                 return Err(format!("face {fi} is degenerate"));
             }

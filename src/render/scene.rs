@@ -82,22 +82,21 @@ pub fn water_levels(mesh: &Mesh) -> Vec<f32> {
     let mut level: Vec<f32> =
         mesh.vertices.par_iter().map(|v| if v.submerged() { v.water } else { f32::NEG_INFINITY }).collect();
     // Each face's highest standing water, in parallel; spread to its dry vertices in face order.
-    let wet_faces: Vec<(usize, f32)> = mesh
-        .faces
-        .par_iter()
-        .enumerate()
-        .filter_map(|(i, f)| {
-            let wet =
-                f.v.iter()
-                    .map(|&v| &mesh.vertices[v as usize])
-                    .filter(|v| v.submerged())
-                    .map(|v| v.water)
-                    .fold(f32::NEG_INFINITY, f32::max);
-            (wet > f32::NEG_INFINITY).then_some((i, wet))
+    let wet_faces: Vec<([u32; 3], f32)> = (0..mesh.faces.len() as u32)
+        .into_par_iter()
+        .filter_map(|f| {
+            let corners = mesh.corners(f);
+            let wet = corners
+                .iter()
+                .map(|&v| &mesh.vertices[v as usize])
+                .filter(|v| v.submerged())
+                .map(|v| v.water)
+                .fold(f32::NEG_INFINITY, f32::max);
+            (wet > f32::NEG_INFINITY).then_some((corners, wet))
         })
         .collect();
-    for &(i, wet) in &wet_faces {
-        for &v in &mesh.faces[i].v {
+    for &(corners, wet) in &wet_faces {
+        for v in corners {
             if !mesh.vertices[v as usize].submerged() {
                 level[v as usize] = level[v as usize].max(wet);
             }
@@ -142,13 +141,13 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             }
         })
         .collect();
-    let terrain: Vec<u32> = mesh.faces.par_iter().flat_map_iter(|f| f.v).collect();
-    let water: Vec<u32> = mesh
-        .faces
+    let triangles = mesh.triangles();
+    let water: Vec<u32> = triangles
         .par_iter()
-        .filter(|f| f.v.iter().any(|&v| mesh.vertices[v as usize].submerged()))
-        .flat_map_iter(|f| f.v)
+        .filter(|t| t.iter().any(|&v| mesh.vertices[v as usize].submerged()))
+        .flat_map_iter(|&t| t)
         .collect();
+    let terrain: Vec<u32> = triangles.into_iter().flatten().collect();
     let (fwd, right, up) = cam.basis();
     let tan_y = (cam.fov_deg.to_radians() * 0.5).tan();
     let tan_x = tan_y * cam.width as f64 / cam.height as f64;

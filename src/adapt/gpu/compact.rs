@@ -78,7 +78,7 @@ impl CompactPipeline {
         let moves = [
             bind(&self.moves[0], &[(0, olds[0]), (3, news[0]), (6, vmap), (7, emap), (11, &grids[0])]),
             bind(&self.moves[1], &[(1, olds[1]), (4, news[1]), (6, vmap), (7, emap), (8, fmap), (11, &grids[1])]),
-            bind(&self.moves[2], &[(2, olds[2]), (5, news[2]), (6, vmap), (7, emap), (8, fmap), (11, &grids[2])]),
+            bind(&self.moves[2], &[(2, olds[2]), (5, news[2]), (7, emap), (8, fmap), (11, &grids[2])]),
         ];
         let mut pass = sub.pass(gpu, Stage::Compact);
         for (k, [live, sums, scan, number]) in groups.iter().enumerate() {

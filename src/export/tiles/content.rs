@@ -15,7 +15,7 @@ use super::tree::{Refiner, ROOTS};
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
 use crate::export::view::water_mesh;
 use crate::mesh::terrain::lift;
-use crate::mesh::{Face, FaceKind, Mesh, NONE};
+use crate::mesh::Mesh;
 use crate::params::Params;
 use glam::{DQuat, DVec3};
 use std::collections::{HashMap, HashSet};
@@ -98,34 +98,37 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
 }
 
-/// The leaves as a mesh of their own (vertices in order of first use; faces only, no edges),
-/// enough for normals, colours and the water surface, and each of its vertices' index in `mesh`.
+/// The leaves as a mesh of their own (vertices in order of first use, faces in leaf order,
+/// edges along the border with one face), enough for normals, colours and the water surface,
+/// and each of its vertices' index in `mesh`.
 fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
     let mut slot: HashMap<u32, u32> = HashMap::with_capacity(leaves.len());
-    let mut out = Mesh { radius: mesh.radius, ..Mesh::default() };
+    let mut vertices = Vec::new();
     let mut ids = Vec::new();
-    for leaf in leaves {
-        let v = leaf.map(|v| {
-            *slot.entry(v).or_insert_with(|| {
-                out.vertices.push(mesh.vertices[v as usize]);
-                ids.push(v);
-                out.vertices.len() as u32 - 1
+    let triangles: Vec<[u32; 3]> = leaves
+        .iter()
+        .map(|leaf| {
+            leaf.map(|v| {
+                *slot.entry(v).or_insert_with(|| {
+                    vertices.push(mesh.vertices[v as usize]);
+                    ids.push(v);
+                    vertices.len() as u32 - 1
+                })
             })
-        });
-        out.faces.push(Face { v, e: [NONE; 3], kind: FaceKind::Sea, _pad: [0; 3] });
-    }
-    (out, ids)
+        })
+        .collect();
+    (Mesh::from_triangles(mesh.radius, vertices, &triangles), ids)
 }
 
 /// The border: directed edges `(a, b)` of faces (counter-clockwise) whose reverse no face has,
 /// in face order.
 pub(super) fn border_edges(surface: &Mesh) -> Vec<(u32, u32)> {
+    let triangles = surface.triangles();
     let directed: HashSet<(u32, u32)> =
-        surface.faces.iter().flat_map(|f| [0, 1, 2].map(|i| (f.v[i], f.v[(i + 1) % 3]))).collect();
-    surface
-        .faces
+        triangles.iter().flat_map(|f| [0, 1, 2].map(|i| (f[i], f[(i + 1) % 3]))).collect();
+    triangles
         .iter()
-        .flat_map(|f| [0, 1, 2].map(|i| (f.v[i], f.v[(i + 1) % 3])))
+        .flat_map(|f| [0, 1, 2].map(|i| (f[i], f[(i + 1) % 3])))
         .filter(|&(a, b)| !directed.contains(&(b, a)))
         .collect()
 }

@@ -41,8 +41,8 @@ pub fn border_normals(
     }
     // Each border vertex (refiner id) and its inside faces (as refiner-id triples).
     let mut ring: HashMap<u32, Vec<[u32; 3]>> = border.iter().map(|&(a, _)| (ids[a as usize], Vec::new())).collect();
-    for f in &surface.faces {
-        let tri = f.v.map(|v| ids[v as usize]);
+    for corners in surface.triangles() {
+        let tri = corners.map(|v| ids[v as usize]);
         for v in tri {
             if let Some(faces) = ring.get_mut(&v) {
                 faces.push(tri);

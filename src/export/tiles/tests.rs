@@ -118,9 +118,9 @@ fn normals_are_seamless(contents: &[TileContent]) -> (usize, usize) {
     let mut shared = 0;
     for c in contents {
         let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
-        for f in &c.surface.faces {
-            let [a, b, d] = f.v.map(|v| c.surface.vertices[v as usize].p());
-            let tri = f.v.map(bits);
+        for f in c.surface.triangles() {
+            let [a, b, d] = f.map(|v| c.surface.vertices[v as usize].p());
+            let tri = f.map(bits);
             area.insert(tri, (b - a).cross(d - a) * 0.5);
             for k in tri {
                 ring.entry(k).or_default().push(tri);
