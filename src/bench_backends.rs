@@ -85,7 +85,8 @@ pub fn run(spec: &PlanetSpec) {
     let _ = gpu::edge_wants(&g, &planet.mesh, &View::new(&views[0].1, p.radius_m, p.min_edge_length_m));
     println!(
         "Adaption from the base mesh ({} faces). Every stage on the device: state update, split-list \
-         compaction, splits, collapses and compaction (spatial ordering on the host).\n",
+         compaction, splits, collapses and compaction (the spatial order between cameras is computed \
+         on the host's copy and followed on the device).\n",
         planet.stats.faces
     );
     println!("| view | faces | same mesh | CPU adapt (ms) | GPU adapt (ms) | GPU device (ms) | device state / select / split / collapse / compact (ms) | submissions | uploaded (MB) | read back (MB) |");

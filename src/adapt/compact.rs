@@ -5,22 +5,32 @@
 //! Compaction can also put the buffers in spatial order (`Mesh::compact_in_spatial_order`): a
 //! pass over an ordered mesh reads its neighbours from nearby memory, ~3 times faster than over
 //! a mesh whose entities were appended split by split, but ordering costs ~15 such passes. So a
-//! mesh kept between cameras is ordered once the faces appended since its last ordering
-//! outnumber the ordered ones ([`scattered`]); other compactions keep the order.
+//! mesh kept between cameras is ordered, before the next camera's passes, once the faces
+//! appended since its last ordering outnumber the ordered ones ([`scattered`]); compactions
+//! during a run keep the order. Between cameras the host holds the mesh (the previous output),
+//! so on the GPU backend it computes the order and the device copy only follows the new ids.
 
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, Renumbering};
 
 /// Slack kept in the buffers, in faces (vertices and edges scale with it).
 pub const N_ALLOC: usize = 65_536;
 
-/// Removes dead entities (in spatial order with `spatial`) and keeps capacities within the
+/// Removes dead entities, keeping the order of the others, and keeps capacities within the
 /// slack policy.
-pub fn compact(mesh: &mut Mesh, spatial: bool) {
-    if spatial {
-        mesh.compact_in_spatial_order();
-    } else {
-        mesh.compact();
-    }
+pub fn compact(mesh: &mut Mesh) {
+    mesh.compact();
+    fit_all(mesh);
+}
+
+/// Removes dead entities and puts the others in spatial order, keeping capacities within the
+/// slack policy; returns the renumbering.
+pub fn order(mesh: &mut Mesh) -> Renumbering {
+    let order = mesh.compact_in_spatial_order();
+    fit_all(mesh);
+    order
+}
+
+fn fit_all(mesh: &mut Mesh) {
     fit(&mut mesh.faces, N_ALLOC);
     fit(&mut mesh.edges, N_ALLOC * 3 / 2);
     fit(&mut mesh.vertices, N_ALLOC / 2);

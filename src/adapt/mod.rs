@@ -211,7 +211,7 @@ impl Adapter {
         if compact::scattered(self.mesh.faces.len(), self.ordered_faces) {
             // Kept between cameras, the mesh is worth ordering once most of it was appended.
             let mut t = Instant::now();
-            self.compact();
+            self.order();
             lap(&mut t, &mut stats.stage_ms.compact);
         }
         let step = match max_faces {
@@ -350,13 +350,22 @@ impl Adapter {
         }
     }
 
-    /// Compacts the mesh, in spatial order when it is [`compact::scattered`].
+    /// Compacts the mesh during a run, keeping the order of what stays.
     fn compact(&mut self) {
         self.forget_device_mesh();
-        let spatial = compact::scattered(self.mesh.faces.len(), self.ordered_faces);
-        compact::compact(&mut self.mesh, spatial);
-        self.ordered_faces =
-            if spatial { self.mesh.faces.len() } else { self.ordered_faces.min(self.mesh.faces.len()) };
+        compact::compact(&mut self.mesh);
+        self.ordered_faces = self.ordered_faces.min(self.mesh.faces.len());
+    }
+
+    /// Puts the mesh kept between cameras in spatial order; its device copy (equal to it between
+    /// cameras) follows on the device.
+    fn order(&mut self) {
+        let order = compact::order(&mut self.mesh);
+        self.ordered_faces = self.mesh.faces.len();
+        #[cfg(feature = "gpu")]
+        self.renumber_device_mesh(&order);
+        #[cfg(not(feature = "gpu"))]
+        drop(order);
     }
 
     /// The state update's split wishes of the edges of `mesh` (lent to the adapter for it).

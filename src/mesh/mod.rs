@@ -26,6 +26,7 @@ pub mod validate;
 pub use collapse::CollapseSite;
 pub use diamond::Diamond;
 pub use kinds::{EdgeKind, FaceKind, VertexFlags};
+pub use order::Renumbering;
 pub use packed::{Lod, Tangent};
 pub use split::{split_kinds, Split, SplitSite};
 

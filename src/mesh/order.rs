@@ -100,6 +100,17 @@ fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: 
     out
 }
 
+/// New ids of the vertices, edges and faces of a mesh: `vertices[old]` is the new id of vertex
+/// `old`, or the dead marker (`u32::MAX - 1`) for a removed one (likewise edges and faces); each map is a bijection from
+/// the kept ids onto `0..n`, with the kept counts `sizes`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Renumbering {
+    pub vertices: Vec<u32>,
+    pub edges: Vec<u32>,
+    pub faces: Vec<u32>,
+    pub sizes: (usize, usize, usize),
+}
+
 /// `map[x]`, keeping the absent marker.
 #[inline]
 fn renumbered(map: &[u32], x: u32) -> u32 {
@@ -129,13 +140,21 @@ impl Mesh {
         let (emap, ne) = kept_order(&self.edges, |e| e.v[0] == DEAD);
         let (fmap, nf) = kept_order(&self.faces, |f| f.e[0] == DEAD);
         if (nv, ne, nf) != (self.vertices.len(), self.edges.len(), self.faces.len()) {
-            self.renumber(&vmap, &emap, &fmap, (nv, ne, nf));
+            self.renumber(&Renumbering { vertices: vmap, edges: emap, faces: fmap, sizes: (nv, ne, nf) });
         }
     }
 
     /// Removes dead vertices, edges and faces and renumbers the live ones in spatial order
-    /// (module doc), updating every reference.
-    pub fn compact_in_spatial_order(&mut self) {
+    /// (module doc), updating every reference. Returns the renumbering, for copies of the mesh
+    /// kept elsewhere to follow.
+    pub fn compact_in_spatial_order(&mut self) -> Renumbering {
+        let order = self.spatial_order();
+        self.renumber(&order);
+        order
+    }
+
+    /// The renumbering that removes dead entities and puts the live ones in spatial order.
+    pub fn spatial_order(&self) -> Renumbering {
         let mut vorder: Vec<(u64, u32)> = (0..self.vertices.len() as u32)
             .into_par_iter()
             .filter(|&v| self.vertices[v as usize].edge != DEAD)
@@ -164,13 +183,13 @@ impl Mesh {
             Some((c[0], (c[1] as u64) << 32 | c[2] as u64))
         });
         let fmap = inverse(&forder, self.faces.len());
-        self.renumber(&vmap, &emap, &fmap, (vorder.len(), eorder.len(), forder.len()));
+        Renumbering { vertices: vmap, edges: emap, faces: fmap, sizes: (vorder.len(), eorder.len(), forder.len()) }
     }
 
-    /// Moves every live entity to its new id and renumbers its references; `sizes` are the
-    /// live counts (each map is a bijection from the live ids onto `0..size`).
-    fn renumber(&mut self, vmap: &[u32], emap: &[u32], fmap: &[u32], sizes: (usize, usize, usize)) {
-        let (nv, ne, nf) = sizes;
+    /// Moves every live entity to its new id in `order` and renumbers its references.
+    pub fn renumber(&mut self, order: &Renumbering) {
+        let (nv, ne, nf) = order.sizes;
+        let (vmap, emap, fmap) = (&order.vertices[..], &order.edges[..], &order.faces[..]);
         self.vertices = scatter(&self.vertices, vmap, nv, |x| x.edge = renumbered(emap, x.edge));
         self.edges = scatter(&self.edges, emap, ne, |x| {
             x.v = x.v.map(|v| renumbered(vmap, v));

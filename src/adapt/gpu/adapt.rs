@@ -4,15 +4,16 @@
 //! A pass records its splits, the state update of the changed mesh, the split-list compaction
 //! (whose chain flags are the demanded edges), the collapse candidates and collapses (which
 //! decide the edges they restore), and the split list of the coarsened mesh in one submission,
-//! and reads back four counts. Compaction runs on the device too, except in spatial order (a
-//! sort, rare: once the mesh appended more than it had ordered), which moves the mesh to the
-//! host and back. The mesh is read back once, at the end, and stays on the device (`Resident`)
-//! for the next run unless the host copy changes first.
+//! and reads back four counts. Compaction runs on the device too. The mesh is read back once,
+//! at the end, and stays on the device (`Resident`) for the next run unless the host copy
+//! changes first; the spatial order between cameras (a sort, rare: once the mesh appended more
+//! than it had ordered) is computed on the host copy, and the device copy follows its new ids.
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
-use crate::adapt::compact::{self, N_ALLOC};
+use crate::adapt::compact::N_ALLOC;
 use crate::adapt::{lap, AdaptStats, Adapter, View, MAX_PASSES};
+use crate::mesh::Renumbering;
 use std::time::Instant;
 
 /// The device copy of an adapter's mesh: equal to the host copy, or, with `ahead`, the newer
@@ -93,7 +94,7 @@ impl Adapter {
                 dead_faces += 2 * collapses;
                 if dead_faces > N_ALLOC.max(dm.lens.2 / 4) {
                     // As on the CPU: squeeze the holes out now, and decide every edge again.
-                    dm = self.compact_on_device(gpu, dm, dead_faces)?.0;
+                    dm = self.compact_on_device(gpu, dm, dead_faces)?;
                     dead_faces = 0;
                     among_apexes = false;
                     lap(&mut t, &mut stats.stage_ms.compact);
@@ -114,20 +115,15 @@ impl Adapter {
                 among_apexes = false;
             }
         }
-        // The final mesh, when a compaction through the host already holds it there.
-        let mut on_host = None;
         if dead_faces > 0 {
-            (dm, on_host) = self.compact_on_device(gpu, dm, dead_faces)?;
+            dm = self.compact_on_device(gpu, dm, dead_faces)?;
             lap(&mut t, &mut stats.stage_ms.compact);
         }
         // A result over the face cap is usually thrown away (the budget search goes coarser):
         // it is read back only if the caller keeps it (`Adapter::read_back_mesh`).
         let wanted = cap.is_none_or(|c| converged && dm.lens.2 <= c);
         if changed && wanted {
-            self.mesh = match on_host {
-                Some(mesh) => mesh,
-                None => download(gpu, &dm, self.mesh.radius)?,
-            };
+            self.mesh = download(gpu, &dm, self.mesh.radius)?;
         }
         self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
         Ok(converged)
@@ -181,28 +177,46 @@ impl Adapter {
     }
 
     /// `dm` without the entities `dead_faces / 2` collapses removed, as [`Adapter::compact`]
-    /// leaves the host mesh: on the device keeping the order, or, when the mesh is
-    /// [`compact::scattered`], in spatial order on the host, whose copy is returned too.
+    /// leaves the host mesh (keeping the order).
     fn compact_on_device(
         &mut self,
         gpu: &GpuAdaption,
         dm: DeviceMesh,
         dead_faces: usize,
-    ) -> Result<(DeviceMesh, Option<crate::mesh::Mesh>), GpuError> {
+    ) -> Result<DeviceMesh, GpuError> {
         let (nv, ne, nf) = dm.lens;
         let n = dead_faces / 2;
-        if compact::scattered(nf, self.ordered_faces) {
-            let mut mesh = download(gpu, &dm, self.mesh.radius)?;
-            compact::compact(&mut mesh, true);
-            self.ordered_faces = mesh.faces.len();
-            return Ok((upload(gpu, &mesh)?, Some(mesh)));
-        }
         let live = (nv - n, ne - 3 * n, nf - 2 * n);
         let mut sub = gpu.submission();
         let out = gpu.compact.encode(gpu, &mut sub, &dm, live)?;
         sub.finish(gpu, &out)?;
         self.ordered_faces = self.ordered_faces.min(live.2);
-        Ok((out, None))
+        Ok(out)
+    }
+
+    /// Makes the device copy follow `order`, which the host copy (equal to it, between cameras)
+    /// just went through; only the maps are uploaded. When that cannot be done the copy is
+    /// dropped, and the next run uploads the mesh.
+    pub(crate) fn renumber_device_mesh(&mut self, order: &Renumbering) {
+        let resident = std::mem::take(&mut self.resident);
+        let (Some(gpu), Some(dm), false) = (&self.gpu, resident.mesh, resident.ahead) else {
+            return;
+        };
+        let maps = (order.vertices.len(), order.edges.len(), order.faces.len());
+        if maps != dm.lens {
+            tracing::debug!("the device copy is not the host's ({:?} vs {maps:?}); uploading the mesh", dm.lens);
+            return;
+        }
+        let mut sub = gpu.submission();
+        let renumbered = gpu.compact.encode_renumbering(gpu, &mut sub, &dm, order).and_then(|out| {
+            sub.finish(gpu, &out)?;
+            Ok(out)
+        });
+        gpu.record(super::DeviceTimes { upload_bytes: 4 * (maps.0 + maps.1 + maps.2) as u64, ..Default::default() });
+        match renumbered {
+            Ok(out) => self.resident = Resident { mesh: Some(out), ahead: false },
+            Err(e) => tracing::debug!("renumbering the device copy failed ({e}); uploading the mesh"),
+        }
     }
 }
 

@@ -8,7 +8,8 @@
 //! (`split.rs`), vertex collapses (`collapse.rs`) and buffer compaction (`compact.rs`), on a
 //! mesh that stays resident between passes and runs (`buffers.rs`); a pass reads back four
 //! counts, the mesh is read back once at the end of a run (`adapt.rs`). The one step left to the
-//! host is the occasional compaction in spatial order (a sort), which moves the mesh both ways.
+//! host is the sort of the occasional spatial order between cameras: the host computes it on its
+//! copy (the previous output) and uploads only the new ids, which the device copy follows.
 //!
 //! Precision: the shaders compute in `f64` (wgpu's `SHADER_F64`), on the mesh's own
 //! planet-centred `f64` positions, with the operations of the CPU code in the same order, so a

@@ -247,9 +247,9 @@ fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
     }
 }
 
-#[test]
-fn device_compaction_equals_host_compaction() {
-    // A refined mesh with holes: every vertex a far camera lets collapse, collapsed once.
+/// A refined mesh with holes: every vertex a far camera lets collapse, collapsed once; and the
+/// number of collapses.
+fn mesh_with_holes() -> (Mesh, usize) {
     let mut a = Adapter::new(planet().mesh.clone(), Params::default());
     a.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), Some(60_000));
     let mut mesh = a.mesh().clone();
@@ -258,7 +258,12 @@ fn device_compaction_equals_host_compaction() {
     let sites = state::collapse_candidates(&mesh, &far, &state::demanded(&mesh, &wants), None);
     assert!(sites.len() > 1000, "only {} collapses", sites.len());
     mesh.collapse_vertices(&sites);
-    let n = sites.len();
+    (mesh, sites.len())
+}
+
+#[test]
+fn device_compaction_equals_host_compaction() {
+    let (mut mesh, n) = mesh_with_holes();
     let (nv, ne, nf) = (mesh.vertices.len(), mesh.edges.len(), mesh.faces.len());
 
     let g = gpu();
@@ -274,4 +279,32 @@ fn device_compaction_equals_host_compaction() {
     assert_eq!(bytemuck::cast_slice::<_, u8>(&mesh.vertices), bytemuck::cast_slice::<_, u8>(&dev.vertices));
     assert_eq!(mesh.edges, dev.edges);
     assert_eq!(mesh.faces, dev.faces);
+}
+
+#[test]
+fn the_device_copy_follows_the_spatial_order_of_the_host() {
+    // A mesh with holes renumbered by the order the host computes: the moves on the device
+    // give the host's result bit for bit.
+    let (mut mesh, _) = mesh_with_holes();
+    let g = gpu();
+    let dm = DeviceMesh::upload(&g, &mesh).unwrap();
+    let order = mesh.compact_in_spatial_order();
+    assert!(order.vertices.iter().enumerate().any(|(old, &new)| new != old as u32), "nothing moved");
+    let mut sub = g.submission();
+    let out = g.compact.encode_renumbering(&g, &mut sub, &dm, &order).unwrap();
+    sub.finish(&g, &out).unwrap();
+    let dev = out.download(&g, mesh.radius).unwrap();
+    assert_eq!(bytemuck::cast_slice::<_, u8>(&mesh.vertices), bytemuck::cast_slice::<_, u8>(&dev.vertices));
+    assert_eq!(mesh.edges, dev.edges);
+    assert_eq!(mesh.faces, dev.faces);
+
+    // Between cameras an adapter orders its mesh and keeps the device copy, which follows.
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(g.clone()));
+    dev.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), None);
+    assert!(crate::adapt::compact::scattered(dev.mesh.faces.len(), dev.ordered_faces));
+    dev.order();
+    let kept = dev.resident.mesh.as_ref().expect("the device copy is kept through the ordering");
+    assert!(!dev.resident.ahead);
+    let copy = kept.download(&g, dev.mesh.radius).unwrap();
+    assert_same_mesh(&dev.mesh, &copy, "the ordered device copy");
 }
