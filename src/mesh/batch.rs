@@ -7,7 +7,7 @@
 //! face slot of its own face, and a corner vertex, whose edge link only the operation that owns
 //! the linked edge moves. Those two writes are single-word atomic stores (and both read the word
 //! atomically first); every other access touches owned entities or reads the other fields of
-//! corner vertices, which no operation of a batch changes.
+//! corner vertices or the end points of outer edges, which no operation of a batch changes.
 
 use super::prefetch::{prefetch, prefetch_vertex};
 use super::split::DEAD;
