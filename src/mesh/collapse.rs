@@ -2,8 +2,8 @@
 //!
 //! A vertex `m` may be collapsed when it was made by a split (not a base vertex) and its four
 //! faces are still the four faces that split made: each has `m` as its newest vertex, which a
-//! face tells by the slots its edges to `m` take. Then the
-//! incident edges `e1..e4` necessarily share one split level, the paper's collapse condition.
+//! face tells by the slots its edges to `m` take. Then the incident edges `e1..e4` necessarily
+//! share one split level, the paper's collapse condition.
 
 use super::batch::Buffers;
 use super::split::DEAD;

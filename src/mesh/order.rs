@@ -29,10 +29,10 @@ fn spread(x: u64) -> u64 {
     x
 }
 
-/// Old ids `0..n` of the items with a key `(bucket, rank)`, in increasing key order (no two items share
-/// a key). Buckets are below `buckets` and hold a few items each (an edge's or a face's lowest
-/// new vertex id), so this is a counting sort by bucket and then a sort of each bucket by rank,
-/// far cheaper than sorting millions of keys by comparison.
+/// Old ids `0..n` of the items with a key `(bucket, rank)`, in increasing key order (no two
+/// items share a key). Buckets are below `buckets` and hold a few items each (an edge's or a
+/// face's lowest new vertex id), so this is a counting sort by bucket and then a sort of each
+/// bucket by rank, far cheaper than sorting millions of keys by comparison.
 fn sorted_order(n: usize, buckets: usize, key: impl Fn(u32) -> Option<(u32, u64)> + Sync) -> Vec<u32> {
     const NO_BUCKET: u32 = u32::MAX;
     let keys: Vec<(u32, u64)> = (0..n as u32).into_par_iter().map(|x| key(x).unwrap_or((NO_BUCKET, 0))).collect();
@@ -101,8 +101,8 @@ fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: 
 }
 
 /// New ids of the vertices, edges and faces of a mesh: `vertices[old]` is the new id of vertex
-/// `old`, or the dead marker (`u32::MAX - 1`) for a removed one (likewise edges and faces); each map is a bijection from
-/// the kept ids onto `0..n`, with the kept counts `sizes`.
+/// `old`, or the dead marker (`u32::MAX - 1`) for a removed one (likewise edges and faces);
+/// each map is a bijection from the kept ids onto `0..n`, with the kept counts `sizes`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Renumbering {
     pub vertices: Vec<u32>,

@@ -15,11 +15,9 @@ impl Mesh {
             if f.e.iter().any(|&e| e >= ne) {
                 return Err(format!("face {fi} references a missing edge"));
             }
-            // The corners as `Mesh::corners` derives them, then every edge checked against them.
-            let e0 = &self.edges[f.e[0] as usize];
-            let [v1, v2] = if e0.f[0] == fi { e0.v } else { [e0.v[1], e0.v[0]] };
-            let e1 = self.edges[f.e[1] as usize].v;
-            let v = [if e1[0] == v2 { e1[1] } else { e1[0] }, v1, v2];
+            // The corners as the edges give them (every edge index is in range now), then every
+            // edge checked against them.
+            let v = self.corners(fi);
             if v.iter().any(|&v| v >= nv) {
                 return Err(format!("face {fi} references a missing vertex"));
             }
