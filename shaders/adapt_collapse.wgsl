@@ -68,8 +68,8 @@ fn collapse_vertices(@builtin(global_invocation_id) id: vec3<u32>) {
     let ad = x2.e[0];
     let db = x4.e[0];
 
-    faces[f1] = Face(array<u32, 3>(e1, bt, ta), x1.kind);
-    faces[f2] = Face(array<u32, 3>(e1, ad, db), x2.kind);
+    faces[f1] = Face(array<u32, 3>(e1, bt, ta));
+    faces[f2] = Face(array<u32, 3>(e1, ad, db));
     relink(bt, f3, f1);
     relink(db, f4, f2);
     let k1 = edge_kind(edge1);

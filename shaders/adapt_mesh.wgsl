@@ -23,16 +23,15 @@ struct Edge {
     f: array<u32, 2>,
     // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
     lod: u32,
-    // level (u16), kind (u8), padding (u8)
+    // level (u16), kind (u8), land (u8: bit 0 when face f[0] is land, bit 1 for f[1])
     bits: u32,
 }
 
 // Corners are not stored: `e[i]` is the edge opposite corner `i`, and the stages that need a
-// corner take it from the far end of one of these edges (`Mesh::corners`).
+// corner take it from the far end of one of these edges (`Mesh::corners`). The face's kind
+// is kept by its edges (`Edge::land`).
 struct Face {
     e: array<u32, 3>,
-    // kind (u8), padding (3 bytes)
-    kind: u32,
 }
 
 // A vertex-wise dispatch of the collapse stages (`Sweep` of `src/adapt/gpu/collapse.rs`).
@@ -53,7 +52,6 @@ const KIND_SEA: u32 = 0u;
 const KIND_COAST: u32 = 1u;
 const KIND_CONTINENT: u32 = 2u;
 const KIND_RIVER: u32 = 3u;
-const FACE_SEA: u32 = 0u;
 
 const FLAG_RIVER: u32 = 8u;
 const FLAG_REFINED: u32 = 64u;
@@ -67,6 +65,11 @@ const F64_MAX: f64 = 1.7976931348623157e308lf;
 
 fn edge_kind(e: Edge) -> u32 {
     return (e.bits >> 16u) & 0xffu;
+}
+
+// Bit 0: face f[0] is land; bit 1: face f[1] is.
+fn edge_land(e: Edge) -> u32 {
+    return e.bits >> 24u;
 }
 
 fn edge_level(e: Edge) -> u32 {

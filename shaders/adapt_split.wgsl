@@ -413,11 +413,9 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     return Made(new_vertex(at, seed, g, water, FLAG_REFINED, 0u), kinds);
 }
 
-fn inner_kind(face_kind: u32) -> u32 {
-    if (face_kind & 0xffu) == FACE_SEA {
-        return KIND_SEA;
-    }
-    return KIND_CONTINENT;
+// The kind of an edge inside a face: continent in a land face (`land` 1), else sea.
+fn inner_kind(land: u32) -> u32 {
+    return select(KIND_SEA, KIND_CONTINENT, land == 1u);
 }
 
 // `Lod` of a half or inner edge from `q` to `r`: inside its parent's bounds.
@@ -462,7 +460,11 @@ fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let kind = edge_kind(parent);
     let at = split_position(s, seed, kind);
     var made: Made;
-    let kinds = array<u32, 4>(kind, inner_kind(old1.kind), kind, inner_kind(old2.kind));
+    // Whether f1 (and so f3) and f2 (and f4) are land.
+    let land = edge_land(parent);
+    let land1 = land & 1u;
+    let land2 = land >> 1u;
+    let kinds = array<u32, 4>(kind, inner_kind(land1), kind, inner_kind(land2));
     if kind == KIND_CONTINENT {
         made = continent_vertex(s, seed, at, kinds);
     } else {
@@ -486,15 +488,18 @@ fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let f2 = s.f2;
 
     // f1 = (m, t, a), f2 = (m, a, d), f3 = (m, b, t), f4 = (m, d, b).
-    faces[f1] = Face(array<u32, 3>(old1.e[2], e1, e2), old1.kind);
-    faces[f2] = Face(array<u32, 3>(old2.e[1], e4, e1), old2.kind);
-    faces[f3] = Face(array<u32, 3>(old1.e[1], e2, e3), old1.kind);
-    faces[f4] = Face(array<u32, 3>(old2.e[2], e3, e4), old2.kind);
+    faces[f1] = Face(array<u32, 3>(old1.e[2], e1, e2));
+    faces[f2] = Face(array<u32, 3>(old2.e[1], e4, e1));
+    faces[f3] = Face(array<u32, 3>(old1.e[1], e2, e3));
+    faces[f4] = Face(array<u32, 3>(old2.e[2], e3, e4));
     let k = made.kinds;
-    edges[e1] = Edge(array<u32, 2>(a, m), array<u32, 2>(f1, f2), child_lod(parent.lod, pa, pm, parent_mid), level | (k[0] << 16u));
-    edges[e2] = Edge(array<u32, 2>(m, t), array<u32, 2>(f1, f3), child_lod(parent.lod, pm, pos(t), parent_mid), level | (k[1] << 16u));
-    edges[e3] = Edge(array<u32, 2>(m, b), array<u32, 2>(f3, f4), child_lod(parent.lod, pm, pb, parent_mid), level | (k[2] << 16u));
-    edges[e4] = Edge(array<u32, 2>(m, d), array<u32, 2>(f4, f2), child_lod(parent.lod, pm, pos(d), parent_mid), level | (k[3] << 16u));
+    let sides = land << 24u;
+    let inner1 = (land1 * 3u) << 24u;
+    let inner2 = (land2 * 3u) << 24u;
+    edges[e1] = Edge(array<u32, 2>(a, m), array<u32, 2>(f1, f2), child_lod(parent.lod, pa, pm, parent_mid), level | (k[0] << 16u) | sides);
+    edges[e2] = Edge(array<u32, 2>(m, t), array<u32, 2>(f1, f3), child_lod(parent.lod, pm, pos(t), parent_mid), level | (k[1] << 16u) | inner1);
+    edges[e3] = Edge(array<u32, 2>(m, b), array<u32, 2>(f3, f4), child_lod(parent.lod, pm, pb, parent_mid), level | (k[2] << 16u) | sides);
+    edges[e4] = Edge(array<u32, 2>(m, d), array<u32, 2>(f4, f2), child_lod(parent.lod, pm, pos(d), parent_mid), level | (k[3] << 16u) | inner2);
     var v = made.v;
     v.edge = e1;
     v.parent_lod = parent.lod;

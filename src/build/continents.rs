@@ -37,20 +37,20 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
     let mut rng = Sequence::new(seed, 0xc0_7713);
     let mut frontier: Vec<Vec<u32>> = Vec::new();
     let mut land = 0.0;
-    for f in mesh.faces.iter_mut() {
-        f.kind = FaceKind::Sea;
+    for e in mesh.edges.iter_mut() {
+        e.land = 0;
     }
 
     let add = |mesh: &mut Mesh, owner: &mut [u16], frontier: &mut Vec<u32>, f: u32, c: u16| {
         let face = mesh.faces[f as usize];
-        mesh.faces[f as usize].kind = FaceKind::Land;
+        mesh.set_face_kind(f, FaceKind::Land);
         for v in mesh.corners(f) {
             owner[v as usize] = c;
         }
         for &e in &face.e {
             let edge = &mesh.edges[e as usize];
             let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
-            if mesh.faces[g as usize].kind == FaceKind::Sea {
+            if mesh.face_kind(g) == FaceKind::Sea {
                 frontier.push(g);
             }
         }
@@ -79,8 +79,7 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
         }
         let i = rng.below(list.len());
         let f = list.swap_remove(i);
-        let face = mesh.faces[f as usize];
-        if face.kind == FaceKind::Land {
+        if mesh.face_kind(f) == FaceKind::Land {
             continue;
         }
         let corners = mesh.corners(f);
@@ -108,8 +107,8 @@ pub fn from_map(mesh: &mut Mesh, map: &Map) {
             }
         })
         .collect();
-    for (f, k) in mesh.faces.iter_mut().zip(kinds) {
-        f.kind = k;
+    for (f, k) in kinds.into_iter().enumerate() {
+        mesh.set_face_kind(f as u32, k);
     }
     classify(mesh);
 }
@@ -125,7 +124,8 @@ pub fn is_land(kind: MapKind, value: f32) -> bool {
 /// Types every edge from its faces and every vertex from its edges (§3.2); clears rivers.
 pub fn classify(mesh: &mut Mesh) {
     for e in mesh.edges.iter_mut() {
-        e.kind = EdgeKind::between(mesh.faces[e.f[0] as usize].kind, mesh.faces[e.f[1] as usize].kind);
+        let [a, b] = e.face_kinds();
+        e.kind = EdgeKind::between(a, b);
     }
     for v in mesh.vertices.iter_mut() {
         v.flags = VertexFlags::empty();
@@ -144,7 +144,7 @@ pub fn land_fraction(mesh: &Mesh) -> f64 {
     for f in 0..mesh.faces.len() as u32 {
         let a = mesh.face_area_vector(f).length();
         total += a;
-        if mesh.faces[f as usize].kind == FaceKind::Land {
+        if mesh.face_kind(f) == FaceKind::Land {
             land += a;
         }
     }
@@ -163,9 +163,9 @@ pub fn count_continents(mesh: &Mesh) -> usize {
         x
     }
     let mut on_land = vec![false; n];
-    for (f, face) in mesh.faces.iter().enumerate() {
-        if face.kind == FaceKind::Land {
-            let corners = mesh.corners(f as u32);
+    for f in 0..mesh.faces.len() as u32 {
+        if mesh.face_kind(f) == FaceKind::Land {
+            let corners = mesh.corners(f);
             for &v in &corners {
                 on_land[v as usize] = true;
             }

@@ -97,7 +97,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     match &spec.map {
         Some(map) => {
             continents::from_map(&mut mesh, map);
-            let land = mesh.faces.iter().filter(|f| f.kind == FaceKind::Land).count();
+            let land = (0..mesh.faces.len() as u32).filter(|&f| mesh.face_kind(f) == FaceKind::Land).count();
             if land == 0 {
                 return Err(BuildError::NoLand);
             }

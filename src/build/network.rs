@@ -117,8 +117,7 @@ impl RiverGraph {
         let n = mesh.vertices.len();
         let mut own = vec![0.0f64; n];
         for f in 0..mesh.faces.len() as u32 {
-            let face = &mesh.faces[f as usize];
-            if face.kind == FaceKind::Land {
+            if mesh.face_kind(f) == FaceKind::Land {
                 let a = mesh.face_area_vector(f).length() / 3.0;
                 for v in mesh.corners(f) {
                     own[v as usize] += a;
@@ -178,8 +177,7 @@ impl RiverGraph {
         let adj = mesh.adjacency();
         let (mut drained, mut total) = (0.0, 0.0);
         for f in 0..mesh.faces.len() as u32 {
-            let face = &mesh.faces[f as usize];
-            if face.kind != FaceKind::Land {
+            if mesh.face_kind(f) != FaceKind::Land {
                 continue;
             }
             let a = mesh.face_area_vector(f).length() / 3.0;

@@ -324,7 +324,7 @@ fn base_split_vertex(
     let diamond = Diamond::new(m, site);
     let seed = split_seed(&diamond);
     let edge = &m.edges[site.edge as usize];
-    let (f1, f2) = (m.faces[site.f1 as usize].kind, m.faces[site.f2 as usize].kind);
+    let [f1, f2] = edge.face_kinds();
     let kinds = split_kinds(edge.kind, f1, f2);
     let [va, vb, vt, vd] = [site.a, site.b, site.t, site.d].map(|v| &m.vertices[v as usize]);
     let xi = altitude_random(seed);

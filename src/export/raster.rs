@@ -229,7 +229,7 @@ fn least_outside(mesh: &Mesh, d: DVec3) -> u32 {
 pub fn landmask_png(mesh: &Mesh, width: u32, height: u32) -> Vec<u8> {
     let raster = SphereRaster::new(mesh, width, height);
     let buf: Vec<u8> =
-        raster.faces.iter().map(|&f| if mesh.faces[f as usize].kind == FaceKind::Land { 255 } else { 0 }).collect();
+        raster.faces.iter().map(|&f| if mesh.face_kind(f) == FaceKind::Land { 255 } else { 0 }).collect();
     encode_png(&buf, width, height, image::ExtendedColorType::L8)
 }
 

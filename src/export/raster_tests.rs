@@ -120,7 +120,7 @@ fn landmask_of_a_hand_made_mesh() {
     refine_to(&mut mesh, 200, 5);
     for f in 0..mesh.faces.len() {
         let z: f64 = mesh.corners(f as u32).iter().map(|&v| mesh.pos(v).z).sum();
-        mesh.faces[f].kind = if z > 0.0 { FaceKind::Land } else { FaceKind::Sea };
+        mesh.set_face_kind(f as u32, if z > 0.0 { FaceKind::Land } else { FaceKind::Sea });
     }
     classify(&mut mesh);
     let img = image::load_from_memory(&landmask_png(&mesh, 40, 20)).unwrap().to_luma8();

@@ -63,7 +63,8 @@ fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
 /// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`.
 pub fn split_vertex(d: &Diamond, p: &Params) -> (Vertex, [EdgeKind; 4]) {
     let seed = split_seed(d);
-    let kinds = split_kinds(d.edge.kind, d.faces[0].kind, d.faces[1].kind);
+    let [f1, f2] = d.edge.face_kinds();
+    let kinds = split_kinds(d.edge.kind, f1, f2);
     let pos = split_position(d, seed, d.edge.kind, p.min_river_length_m);
     match d.edge.kind {
         EdgeKind::Continent => continent_vertex(d, p, seed, pos, kinds),

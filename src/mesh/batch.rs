@@ -168,21 +168,24 @@ impl Buffers {
         let parent_mid = (pa + pb) * 0.5;
 
         // Faces: f1 = (m, t, a), f3 = (m, b, t), f2 = (m, a, d), f4 = (m, d, b).
-        self.f.add(f1 as usize).write(Face::new([old1.e[2], e1, e2], old1.kind));
-        self.f.add(f2 as usize).write(Face::new([old2.e[1], e4, e1], old2.kind));
-        self.f.add(f3 as usize).write(Face::new([old1.e[1], e2, e3], old1.kind));
-        self.f.add(f4 as usize).write(Face::new([old2.e[2], e3, e4], old2.kind));
-        let edge = |v: [u32; 2], f: [u32; 2], kind, p: DVec3, q: DVec3| {
+        self.f.add(f1 as usize).write(Face { e: [old1.e[2], e1, e2] });
+        self.f.add(f2 as usize).write(Face { e: [old2.e[1], e4, e1] });
+        self.f.add(f3 as usize).write(Face { e: [old1.e[1], e2, e3] });
+        self.f.add(f4 as usize).write(Face { e: [old2.e[2], e3, e4] });
+        let edge = |v: [u32; 2], f: [u32; 2], kind, land, p: DVec3, q: DVec3| {
             let length = p.distance(q);
             let offset = ((p + q) * 0.5).distance(parent_mid);
             let (len, radius) = (parent.lod.len() as f64, parent.lod.radius() as f64);
             let lod = Lod::new(length.min(len), (LOD_RADIUS as f64 * length).min(radius - offset));
-            Edge { v, f, lod, level, kind, _pad: 0 }
+            Edge { v, f, lod, level, kind, land }
         };
-        self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], pa, pm));
-        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], pm, pt));
-        self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], pm, pb));
-        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], pm, pd));
+        // f1 and f3 are of f1's kind, f2 and f4 of f2's.
+        let [k1, k2] = parent.face_kinds();
+        let (inner1, inner2) = (Edge::land_bits([k1, k1]), Edge::land_bits([k2, k2]));
+        self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], parent.land, pa, pm));
+        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], inner1, pm, pt));
+        self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], parent.land, pm, pb));
+        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], inner2, pm, pd));
         vertex.edge = e1;
         vertex.parent_lod = parent.lod;
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
@@ -205,8 +208,8 @@ impl Buffers {
         let (x1, x2, x3, x4) = (face(f1).read(), face(f2).read(), face(f3).read(), face(f4).read());
         let (bt, ta, ad, db) = (x3.e[0], x1.e[0], x2.e[0], x4.e[0]);
         // After: f1 = (t, a, b), f2 = (d, b, a).
-        face(f1).write(Face { e: [e1, bt, ta], ..x1 });
-        face(f2).write(Face { e: [e1, ad, db], ..x2 });
+        face(f1).write(Face { e: [e1, bt, ta] });
+        face(f2).write(Face { e: [e1, ad, db] });
         self.relink(bt, f3, f1);
         self.relink(db, f4, f2);
 

@@ -77,23 +77,23 @@ pub struct Edge {
     /// Split level: incremented by each split, decremented by each collapse.
     pub level: u16,
     pub kind: EdgeKind,
-    pub _pad: u8,
+    /// Which of the two faces are land: bit `i` for `f[i]`. A face's kind (§3.2) lives in its
+    /// three edges, each on the face's side, rather than in the face (see [`Mesh::face_kind`]).
+    pub land: u8,
 }
 
-/// One triangle (Table 3, "active faces"): 16 bytes.
+/// One triangle (Table 3, "active faces"): 12 bytes.
 ///
-/// A face names its edges only. Its corners `v0, v1, v2` (counter-clockwise seen from outside
+/// A face names its edges only; its kind is kept by the edges ([`Edge::land`]). Its corners `v0, v1, v2` (counter-clockwise seen from outside
 /// the planet, `v0` the newest vertex) follow from them: `e[i]` is the edge opposite corner
 /// `i`, running `v[i+1] -> v[i+2]` as the face walks it, so `e[0]` gives `v1, v2` (in its own
 /// order when the face is on its left, reversed otherwise) and `e[1]` joins `v2` to `v0`
 /// (see [`Mesh::corners`]). Storing the corners too would cost 12 bytes a face, 24 a vertex.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::CheckedBitPattern)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Face {
     /// `e[i]` is the edge opposite corner `i`; `e[0]` is the refinement edge.
     pub e: [u32; 3],
-    pub kind: FaceKind,
-    pub _pad: [u8; 3],
 }
 
 /// The planet mesh: flat buffers, indices are `u32`.
@@ -139,11 +139,23 @@ impl Edge {
             self.v[0]
         }
     }
-}
 
-impl Face {
-    pub fn new(e: [u32; 3], kind: FaceKind) -> Face {
-        Face { e, kind, _pad: [0; 3] }
+    /// Kinds of the faces `f[0]` and `f[1]`.
+    #[inline]
+    pub fn face_kinds(&self) -> [FaceKind; 2] {
+        [0, 1].map(|i| if self.land >> i & 1 == 1 { FaceKind::Land } else { FaceKind::Sea })
+    }
+
+    /// [`Edge::land`] for faces of kinds `kinds`.
+    #[inline]
+    pub fn land_bits(kinds: [FaceKind; 2]) -> u8 {
+        kinds[0] as u8 | (kinds[1] as u8) << 1
+    }
+
+    /// Kind of face `f`, one of the edge's two faces.
+    #[inline]
+    pub fn face_kind(&self, f: u32) -> FaceKind {
+        self.face_kinds()[usize::from(self.f[0] != f)]
     }
 }
 
@@ -157,7 +169,7 @@ pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
 // The WGSL twins of these structs (`shaders/adapt_mesh.wgsl`) spell the same layouts out.
-const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 16);
+const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 12);
 
 impl Mesh {
     pub fn pos(&self, v: u32) -> DVec3 {
@@ -171,6 +183,21 @@ impl Mesh {
         let e0 = &self.edges[face.e[0] as usize];
         let [v1, v2] = if e0.f[0] == f { e0.v } else { [e0.v[1], e0.v[0]] };
         [self.edges[face.e[1] as usize].other(v2), v1, v2]
+    }
+
+    /// Kind of face `f`, as its refinement edge keeps it.
+    #[inline]
+    pub fn face_kind(&self, f: u32) -> FaceKind {
+        self.edges[self.faces[f as usize].e[0] as usize].face_kind(f)
+    }
+
+    /// Makes face `f` of kind `kind`: marks it so in each of its edges.
+    pub fn set_face_kind(&mut self, f: u32, kind: FaceKind) {
+        for e in self.faces[f as usize].e {
+            let edge = &mut self.edges[e as usize];
+            let bit = 1 << usize::from(edge.f[0] != f);
+            edge.land = if kind == FaceKind::Land { edge.land | bit } else { edge.land & !bit };
+        }
     }
 
     /// The corners of every face, in face order (the triangle list of the mesh).
@@ -193,7 +220,7 @@ impl Mesh {
         let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new() };
         let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
         for (fi, t) in tris.iter().enumerate() {
-            let mut face = Face::new([NONE; 3], FaceKind::Sea);
+            let mut face = Face { e: [NONE; 3] };
             for i in 0..3 {
                 // Edge opposite corner i runs from corner i+1 to corner i+2.
                 let (a, b) = (t[(i + 1) % 3], t[(i + 2) % 3]);
@@ -208,7 +235,7 @@ impl Mesh {
                         lod: Lod::default(),
                         level: 0,
                         kind: EdgeKind::Sea,
-                        _pad: 0,
+                        land: 0,
                     });
                     by_pair.insert((a, b), id);
                     id

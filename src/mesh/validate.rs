@@ -1,7 +1,8 @@
 //! Structural checks of the mesh: a closed, consistently wound 2-manifold of genus 0 whose
-//! buffers reference each other correctly. Used by tests and by `--check` style diagnostics.
+//! buffers reference each other correctly, with face and edge types that agree (§3.2). Used by
+//! tests and by `--check` style diagnostics.
 
-use super::{Mesh, NONE};
+use super::{EdgeKind, Mesh, NONE};
 
 impl Mesh {
     /// Checks connectivity and winding; returns the first problem found.
@@ -37,6 +38,9 @@ impl Mesh {
                 if edge.f[side] != fi {
                     return Err(format!("edge {} does not point back to face {fi}", f.e[i]));
                 }
+                if edge.face_kind(fi) != self.face_kind(fi) {
+                    return Err(format!("edges of face {fi} disagree on its kind"));
+                }
                 uses[f.e[i] as usize] += 1;
             }
             let n = self.face_area_vector(fi);
@@ -51,6 +55,11 @@ impl Mesh {
         for (ei, e) in self.edges.iter().enumerate() {
             if uses[ei] != 2 || e.f.contains(&NONE) {
                 return Err(format!("edge {ei} is used by {} faces, not 2", uses[ei]));
+            }
+            let [a, b] = e.face_kinds();
+            let expected = EdgeKind::between(a, b);
+            if e.land > 3 || (e.kind != expected && !(e.kind == EdgeKind::River && expected == EdgeKind::Continent)) {
+                return Err(format!("edge {ei} of kind {:?} lies between faces of kinds {a:?} and {b:?}", e.kind));
             }
         }
         for (vi, v) in self.vertices.iter().enumerate() {
