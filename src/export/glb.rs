@@ -59,14 +59,17 @@ pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
 /// The terrain of a mesh as a [`GlbMesh`] in glTF axes; with `origin` (planet frame), positions
 /// are `f32` offsets from it computed in `f64`, and the origin becomes the node translation.
 pub fn terrain_mesh(mesh: &Mesh, params: &Params, origin: Option<glam::DVec3>) -> GlbMesh {
-    terrain_mesh_with_normals(mesh, params, origin, &surface_normals(mesh))
+    let triangles = mesh.triangles();
+    terrain_mesh_with_normals(mesh, params, origin, &triangles, &surface_normals(mesh, &triangles))
 }
 
-/// [`terrain_mesh`] with the given unit normals (planet frame), one per vertex.
+/// [`terrain_mesh`] of the mesh's `triangles` ([`Mesh::triangles`]) with the given unit normals
+/// (planet frame), one per vertex.
 pub fn terrain_mesh_with_normals(
     mesh: &Mesh,
     params: &Params,
     origin: Option<glam::DVec3>,
+    triangles: &[[u32; 3]],
     normals: &[glam::DVec3],
 ) -> GlbMesh {
     let o = origin.unwrap_or(glam::DVec3::ZERO);
@@ -93,7 +96,7 @@ pub fn terrain_mesh_with_normals(
         };
         out.colors.push([r, g, b, 255]);
     }
-    out.indices = mesh.triangles().into_iter().flatten().collect();
+    out.indices = triangles.iter().flatten().copied().collect();
     out
 }
 

@@ -22,15 +22,15 @@ pub use raster::{elevation_tiff, landmask_png, preview_png, SphereRaster};
 use crate::mesh::Mesh;
 use glam::DVec3;
 
-/// Unit surface normal of every vertex: the area-weighted sum of its faces' normals.
+/// Unit surface normal of every vertex: the area-weighted sum of its faces' normals, given the
+/// mesh's triangles ([`Mesh::triangles`], derived once by each export and shared).
 ///
 /// The mesh stores no normals (river vertices keep only their downstream tangent), so exports
 /// compute them from the faces.
-pub fn surface_normals(mesh: &Mesh) -> Vec<DVec3> {
+pub fn surface_normals(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<DVec3> {
     use rayon::prelude::*;
     // Face vectors in parallel, then summed per vertex in face order (the same bits as a serial
     // pass), then normalised in parallel.
-    let triangles = mesh.triangles();
     let areas: Vec<DVec3> = triangles.par_iter().map(|&t| mesh.triangle_area_vector(t)).collect();
     let mut acc = vec![DVec3::ZERO; mesh.vertices.len()];
     for (corners, &n) in triangles.iter().zip(&areas) {

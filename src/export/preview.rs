@@ -99,7 +99,7 @@ fn wrap180(d: f64) -> f64 {
 /// with hillshading, rivers drawn by Strahler order.
 pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32, height: u32) -> Vec<u8> {
     let raster = SphereRaster::new(mesh, width, height);
-    let normals = surface_normals(mesh);
+    let normals = surface_normals(mesh, &mesh.triangles());
     let sea = params.sea_level_m;
     let w = width as usize;
     let mut img = vec![0u8; w * height as usize * 3];

@@ -2,7 +2,8 @@
 //! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
 
 use super::climate::water_colour;
-use super::glb::{encode_glb, terrain_mesh, to_gltf_axes, GlbMesh};
+use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
+use super::surface_normals;
 use crate::mesh::terrain::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -19,16 +20,22 @@ pub fn local_origin(eye: DVec3, radius: f64) -> DVec3 {
 
 /// Terrain plus water surface as one `.glb`, positions relative to `origin`.
 pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Vec<u8> {
-    encode_glb(&[terrain_mesh(mesh, params, Some(origin)), water_mesh(mesh, params, origin)])
+    let triangles = mesh.triangles();
+    let normals = surface_normals(mesh, &triangles);
+    encode_glb(&[
+        terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
+        water_mesh(mesh, params, origin, &triangles),
+    ])
 }
 
-/// Triangles with at least one submerged corner, at water altitude (dry corners at the ground,
-/// so the surface meets the shore); colour by depth.
-pub fn water_mesh(mesh: &Mesh, params: &Params, origin: DVec3) -> GlbMesh {
+/// Of the mesh's `triangles` ([`Mesh::triangles`]), those with at least one submerged corner,
+/// at water altitude (dry corners at the ground, so the surface meets the shore); colour by
+/// depth.
+pub fn water_mesh(mesh: &Mesh, params: &Params, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh {
     let mut out = GlbMesh { translation: Some(to_gltf_axes(origin.to_array())), ..GlbMesh::default() };
     let mut slot = vec![u32::MAX; mesh.vertices.len()];
     let up = to_gltf_axes(origin.normalize_or(DVec3::X).to_array()).map(|x| x as f32);
-    for corners in mesh.triangles() {
+    for &corners in triangles {
         if !corners.iter().any(|&v| mesh.vertices[v as usize].submerged()) {
             continue;
         }
@@ -67,7 +74,7 @@ mod tests {
         let mut a = Adapter::new(planet.mesh.clone(), p.clone());
         a.adapt(&cam, Some(200_000));
         let origin = local_origin(eye, r);
-        let terrain = terrain_mesh(a.mesh(), &p, Some(origin));
+        let terrain = crate::export::glb::terrain_mesh(a.mesh(), &p, Some(origin));
         // Every vertex near the origin is reproduced to 1 cm from its f32 offset + f64 origin.
         let o = to_gltf_axes(origin.to_array());
         let mut near = 0;
@@ -84,7 +91,7 @@ mod tests {
         let glb = view_glb(a.mesh(), &p, origin);
         assert_eq!(&glb[..4], b"glTF");
         assert_eq!(view_glb(a.mesh(), &p, origin), glb);
-        let water = water_mesh(a.mesh(), &p, origin);
+        let water = water_mesh(a.mesh(), &p, origin, &a.mesh().triangles());
         assert!(!water.indices.is_empty());
         assert!(water.indices.iter().all(|&i| (i as usize) < water.positions.len()));
     }

@@ -78,14 +78,13 @@ pub fn default_sun(cam: &Camera) -> DVec3 {
 
 /// Water level of every vertex (see [`RenderVertex`]): own water where submerged, else the
 /// highest water of submerged face neighbours, else own water.
-pub fn water_levels(mesh: &Mesh) -> Vec<f32> {
+pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f32> {
     let mut level: Vec<f32> =
         mesh.vertices.par_iter().map(|v| if v.submerged() { v.water } else { f32::NEG_INFINITY }).collect();
     // Each face's highest standing water, in parallel; spread to its dry vertices in face order.
-    let wet_faces: Vec<([u32; 3], f32)> = (0..mesh.faces.len() as u32)
-        .into_par_iter()
-        .filter_map(|f| {
-            let corners = mesh.corners(f);
+    let wet_faces: Vec<([u32; 3], f32)> = triangles
+        .par_iter()
+        .filter_map(|&corners| {
             let wet = corners
                 .iter()
                 .map(|&v| &mesh.vertices[v as usize])
@@ -119,8 +118,9 @@ pub fn view_projection(cam: &Camera) -> DMat4 {
 
 /// Prepares `mesh` (ground altitudes above the base sphere) for drawing from `cam`.
 pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene {
-    let normals = crate::export::surface_normals(mesh);
-    let levels = water_levels(mesh);
+    let triangles = mesh.triangles();
+    let normals = crate::export::surface_normals(mesh, &triangles);
+    let levels = water_levels(mesh, &triangles);
     let sea = params.sea_level_m;
     let eye = cam.eye;
     let vertices: Vec<RenderVertex> = mesh
@@ -141,7 +141,6 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             }
         })
         .collect();
-    let triangles = mesh.triangles();
     let water: Vec<u32> = triangles
         .par_iter()
         .filter(|t| t.iter().any(|&v| mesh.vertices[v as usize].submerged()))

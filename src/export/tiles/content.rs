@@ -74,9 +74,10 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let mut leaves = Vec::with_capacity(1 << spec.content_depth);
     refiner.descendants(cell, spec.content_depth, &mut leaves);
     let (surface, ids) = surface_mesh(refiner.mesh(), &leaves);
-    let border = border_edges(&surface);
+    let triangles = surface.triangles();
+    let border = border_edges(&triangles);
     let depth = 2 * u32::from(key.level) + spec.content_depth;
-    let normals = border_normals(refiner, cell, depth, &surface, &ids, &border);
+    let normals = border_normals(refiner, cell, depth, &surface, &triangles, &ids, &border);
 
     let mut hull: Vec<DVec3> = Vec::with_capacity(surface.vertices.len() + border.len());
     for v in &surface.vertices {
@@ -89,10 +90,10 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let bounds = OrientedBox::fit(hull, axes, spec.pad_m);
 
     let origin = bounds.centre;
-    let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &normals);
+    let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &triangles, &normals);
     terrain.translation = None;
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
-    let mut water = water_mesh(&surface, params, origin);
+    let mut water = water_mesh(&surface, params, origin, &triangles);
     water.translation = None;
     let glb = encode_glb(&[terrain, water]);
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
@@ -120,10 +121,9 @@ fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
     (Mesh::from_triangles(mesh.radius, vertices, &triangles), ids)
 }
 
-/// The border: directed edges `(a, b)` of faces (counter-clockwise) whose reverse no face has,
-/// in face order.
-pub(super) fn border_edges(surface: &Mesh) -> Vec<(u32, u32)> {
-    let triangles = surface.triangles();
+/// The border of a surface with `triangles` ([`Mesh::triangles`]): directed edges `(a, b)` of
+/// faces (counter-clockwise) whose reverse no face has, in face order.
+pub(super) fn border_edges(triangles: &[[u32; 3]]) -> Vec<(u32, u32)> {
     let directed: HashSet<(u32, u32)> =
         triangles.iter().flat_map(|f| [0, 1, 2].map(|i| (f[i], f[(i + 1) % 3]))).collect();
     triangles

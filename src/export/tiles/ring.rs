@@ -25,23 +25,25 @@ const SLACK: f64 = 1.0;
 const ATTEMPTS: usize = 4;
 
 /// Unit normals of `surface`'s vertices: area-weighted over the surface's faces inside, over the
-/// whole ring of the uniform depth-`depth` triangulation on the border. `ids` are the surface
-/// vertices' indices in `refiner`'s mesh; `cell` is the tile's node; `border` its border edges.
+/// whole ring of the uniform depth-`depth` triangulation on the border. `triangles` are the
+/// surface's faces ([`Mesh::triangles`]), `ids` its vertices' indices in `refiner`'s mesh;
+/// `cell` is the tile's node; `border` its border edges.
 pub fn border_normals(
     refiner: &mut Refiner,
     cell: [u32; 3],
     depth: u32,
     surface: &Mesh,
+    triangles: &[[u32; 3]],
     ids: &[u32],
     border: &[(u32, u32)],
 ) -> Vec<DVec3> {
-    let mut normals = surface_normals(surface);
+    let mut normals = surface_normals(surface, triangles);
     if border.is_empty() {
         return normals;
     }
     // Each border vertex (refiner id) and its inside faces (as refiner-id triples).
     let mut ring: HashMap<u32, Vec<[u32; 3]>> = border.iter().map(|&(a, _)| (ids[a as usize], Vec::new())).collect();
-    for corners in surface.triangles() {
+    for &corners in triangles {
         let tri = corners.map(|v| ids[v as usize]);
         for v in tri {
             if let Some(faces) = ring.get_mut(&v) {

@@ -78,7 +78,7 @@ fn level_zero_closes_the_sphere_without_cracks() {
         let c = t.content(TileKey::root(root));
         assert_eq!(c.surface.faces.len(), 1 << CONTENT_DEPTH);
         let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
-        edges.extend(content::border_edges(&c.surface).iter().map(|&(a, b)| (bits(a), bits(b))));
+        edges.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
     }
     let set: HashSet<_> = edges.iter().copied().collect();
     assert!(edges.len() > 8 * 64);
@@ -98,12 +98,12 @@ fn neighbouring_tiles_share_their_border_vertices() {
         let c = t.content(k);
         assert!(c.splits > 0, "level 2 is finer than the test planet's base mesh");
         let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
-        all.extend(content::border_edges(&c.surface).iter().map(|&(a, b)| (bits(a), bits(b))));
+        all.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
     }
     let set: HashSet<_> = all.iter().copied().collect();
     let shared = all.iter().filter(|(a, b)| set.contains(&(*b, *a))).count();
     // The 16 tiles tile root 0: all edges but those on root 0's own border are shared.
-    let outer = content::border_edges(&t.content(TileKey::root(0)).surface).len() * 4;
+    let outer = content::border_edges(&t.content(TileKey::root(0)).surface.triangles()).len() * 4;
     assert_eq!(shared + outer, all.len(), "outer border edges: {outer}");
 }
 
@@ -305,7 +305,7 @@ fn skirts_hang_below_the_border() {
     let t = tiles();
     let key = TileKey::root(2).child(0);
     let c = t.content(key);
-    let border = content::border_edges(&c.surface);
+    let border = content::border_edges(&c.surface.triangles());
     let positions = glb_positions(&c.glb);
     let n = c.surface.vertices.len();
     let feet = positions.len() - n;
