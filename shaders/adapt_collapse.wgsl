@@ -27,12 +27,6 @@ fn relink(e: u32, old: u32, new_face: u32) {
 }
 
 // Moves vertex `v`'s edge link from `gone` to `keep` if it points to `gone`.
-// The end of edge `e` that is not `v`.
-fn far_end(e: u32, v: u32) -> u32 {
-    let first = edges[e].v[0];
-    return select(first, edges[e].v[1], first == v);
-}
-
 fn move_link(v: u32, gone: u32, keep: u32) {
     if vertices[v].edge == gone {
         vertices[v].edge = keep;

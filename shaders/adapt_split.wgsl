@@ -436,12 +436,6 @@ fn relink(e: u32, old: u32, new_face: u32) {
     }
 }
 
-// The end of edge `e` that is not `v`.
-fn far_end(e: u32, v: u32) -> u32 {
-    let first = edges[e].v[0];
-    return select(first, edges[e].v[1], first == v);
-}
-
 @compute @workgroup_size(64)
 fn split_edges(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x + id.y * p.row;

@@ -43,12 +43,6 @@ fn quiet(x: Face) -> bool {
     return demanded[x.e[0]] == 0u && demanded[x.e[1]] == 0u && demanded[x.e[2]] == 0u;
 }
 
-// The end of edge `e` that is not `v`.
-fn far_end(e: u32, v: u32) -> u32 {
-    let first = edges[e].v[0];
-    return select(first, edges[e].v[1], first == v);
-}
-
 // `Mesh::collapse_site`: the four faces still those of m's split, each holding its edges to m
 // in the slots that make m its newest corner.
 fn collapsible(m: u32) -> bool {

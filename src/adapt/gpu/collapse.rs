@@ -42,7 +42,11 @@ impl CollapsePipeline {
         let module = super::shader(
             device,
             "adapt_collapse.wgsl",
-            &[include_str!("../../../shaders/adapt_collapse.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
+            &[
+                include_str!("../../../shaders/adapt_collapse.wgsl"),
+                include_str!("../../../shaders/adapt_view.wgsl"),
+                super::EDGE_HELPERS,
+            ],
         )?;
         Ok(CollapsePipeline { pipeline: super::pipeline(device, &module, "collapse_vertices") })
     }

@@ -338,6 +338,9 @@ pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u
     (gx, groups.div_ceil(gx), gx * size)
 }
 
+/// Edge helpers (`far_end`) of the stages that bind `edges`: split, state and collapse.
+const EDGE_HELPERS: &str = include_str!("../../../shaders/adapt_edges.wgsl");
+
 /// `shaders/adapt_mesh.wgsl` followed by `sources`.
 fn stage_source(sources: &[&str]) -> String {
     let mut full = include_str!("../../../shaders/adapt_mesh.wgsl").to_string();

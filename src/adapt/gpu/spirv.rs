@@ -199,8 +199,11 @@ mod tests {
     use super::*;
 
     fn split_stage() -> Entry {
-        let mut entries =
-            compile(&super::super::stage_source(&[include_str!("../../../shaders/adapt_split.wgsl")])).unwrap();
+        let mut entries = compile(&super::super::stage_source(&[
+            include_str!("../../../shaders/adapt_split.wgsl"),
+            super::super::EDGE_HELPERS,
+        ]))
+        .unwrap();
         assert_eq!(entries.len(), 1);
         entries.pop().unwrap()
     }
@@ -244,6 +247,7 @@ mod tests {
         let source = super::super::stage_source(&[
             include_str!("../../../shaders/adapt_state.wgsl"),
             include_str!("../../../shaders/adapt_view.wgsl"),
+            super::super::EDGE_HELPERS,
         ]);
         let entries = compile(&source).unwrap();
         let candidates = entries.iter().find(|e| e.name == "collapse_candidates").unwrap();

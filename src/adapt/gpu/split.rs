@@ -88,7 +88,11 @@ pub(super) struct SplitPipeline {
 
 impl SplitPipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<SplitPipeline, super::GpuError> {
-        let module = super::shader(device, "adapt_split.wgsl", &[include_str!("../../../shaders/adapt_split.wgsl")])?;
+        let module = super::shader(
+            device,
+            "adapt_split.wgsl",
+            &[include_str!("../../../shaders/adapt_split.wgsl"), super::EDGE_HELPERS],
+        )?;
         Ok(SplitPipeline { pipeline: super::pipeline(device, &module, "split_edges") })
     }
 

@@ -58,7 +58,11 @@ impl StatePipeline {
         let module = super::shader(
             device,
             "adapt_state.wgsl",
-            &[include_str!("../../../shaders/adapt_state.wgsl"), include_str!("../../../shaders/adapt_view.wgsl")],
+            &[
+                include_str!("../../../shaders/adapt_state.wgsl"),
+                include_str!("../../../shaders/adapt_view.wgsl"),
+                super::EDGE_HELPERS,
+            ],
         )?;
         Ok(StatePipeline {
             pipeline: super::pipeline(device, &module, "edge_wants"),
