@@ -1,11 +1,12 @@
-//! The planet mesh (paper §3, Table 3): vertex, edge and face buffers, their types (§3.2), and the
-//! two atomic operations, edge split and vertex collapse (Figure 2).
+//! The planet mesh (paper §3, Table 3): vertex, edge and face buffers, their types (§3.2), and
+//! the two atomic operations, edge split and vertex collapse (Figure 2).
 //!
-//! Refinement follows newest-vertex bisection: every face stores its newest vertex in `v[0]`, and the
-//! edge opposite it (`e[0]`) is the face's refinement edge — the edge with the lowest split level in
-//! the face, as §3.1 demands. An edge may be split only when it is the refinement edge of both of its
-//! faces, so each split always sees the same four vertices `v_ev1, v_ev2, v_t, v_d`. That is what
-//! makes the terrain reproducible whatever the order of refinement.
+//! Refinement follows newest-vertex bisection: every face's first corner `v0` is its newest
+//! vertex, and the edge opposite it (`e[0]`) is the face's refinement edge — the edge with the
+//! lowest split level in the face, as §3.1 demands. An edge may be split only when it is the
+//! refinement edge of both of its faces, so each split always sees the same four vertices
+//! `v_ev1, v_ev2, v_t, v_d`. That is what makes the terrain reproducible whatever the order of
+//! refinement.
 //!
 //! Positions are `f64` metres in the planet-centred frame (+Z = north pole, longitude 0 on +X): at
 //! Earth radius an `f64` resolves ~1 nm, so the paper's 1 cm minimum edge length is far above the
@@ -84,11 +85,12 @@ pub struct Edge {
 
 /// One triangle (Table 3, "active faces"): 12 bytes.
 ///
-/// A face names its edges only; its kind is kept by the edges ([`Edge::land`]). Its corners `v0, v1, v2` (counter-clockwise seen from outside
-/// the planet, `v0` the newest vertex) follow from them: `e[i]` is the edge opposite corner
-/// `i`, running `v[i+1] -> v[i+2]` as the face walks it, so `e[0]` gives `v1, v2` (in its own
-/// order when the face is on its left, reversed otherwise) and `e[1]` joins `v2` to `v0`
-/// (see [`Mesh::corners`]). Storing the corners too would cost 12 bytes a face, 24 a vertex.
+/// A face names its edges only; its kind is kept by the edges ([`Edge::land`]). Its corners
+/// `v0, v1, v2` (counter-clockwise seen from outside the planet, `v0` the newest vertex) follow
+/// from them: `e[i]` is the edge opposite corner `i`, running `v[i+1] -> v[i+2]` as the face
+/// walks it, so `e[0]` gives `v1, v2` (in its own order when the face is on its left, reversed
+/// otherwise) and `e[1]` joins `v2` to `v0` (see [`Mesh::corners`]). Storing the corners too
+/// would cost 12 bytes a face, 24 a vertex.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Face {
