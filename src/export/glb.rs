@@ -72,47 +72,93 @@ pub fn terrain_mesh_with_normals(
     triangles: &[[u32; 3]],
     normals: &[glam::DVec3],
 ) -> GlbMesh {
+    use rayon::prelude::*;
+    assert_eq!(normals.len(), mesh.vertices.len(), "one normal per vertex");
     let o = origin.unwrap_or(glam::DVec3::ZERO);
     let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
     let sea = params.sea_level_m;
-    let mut out = GlbMesh {
-        positions: Vec::with_capacity(mesh.vertices.len()),
-        normals: Vec::with_capacity(mesh.vertices.len()),
-        colors: Vec::with_capacity(mesh.vertices.len()),
-        indices: Vec::with_capacity(mesh.faces.len() * 3),
+    let vertices = &mesh.vertices;
+    GlbMesh {
+        positions: vertices.par_iter().map(|v| to_gltf_axes((v.p() - o).to_array()).map(|x| x as f32)).collect(),
+        normals: normals
+            .par_iter()
+            .map(|n| {
+                let n = to_gltf_axes(n.to_array()).map(|x| x as f32);
+                let len = n.iter().map(|x| x * x).sum::<f32>().sqrt();
+                if len > 0.0 {
+                    n.map(|x| x / len)
+                } else {
+                    [0.0, 1.0, 0.0]
+                }
+            })
+            .collect(),
+        colors: vertices
+            .par_iter()
+            .map(|v| {
+                let [r, g, b] = if v.flags.contains(VertexFlags::RIVER) {
+                    RIVER_RGB
+                } else if !v.flags.intersects(land) {
+                    water_colour(sea - v.ground as f64)
+                } else {
+                    climate_colour(params.climate, lat_lon(v.p()).0, v.ground as f64 - sea)
+                };
+                [r, g, b, 255]
+            })
+            .collect(),
+        indices: triangles.par_iter().flat_map_iter(|t| *t).collect(),
         translation: origin.map(|o| to_gltf_axes(o.to_array())),
-    };
-    for (v, n) in mesh.vertices.iter().zip(normals) {
-        out.positions.push(to_gltf_axes((v.p() - o).to_array()).map(|x| x as f32));
-        let n = to_gltf_axes(n.to_array()).map(|x| x as f32);
-        let len = n.iter().map(|x| x * x).sum::<f32>().sqrt();
-        out.normals.push(if len > 0.0 { n.map(|x| x / len) } else { [0.0, 1.0, 0.0] });
-        let [r, g, b] = if v.flags.contains(VertexFlags::RIVER) {
-            RIVER_RGB
-        } else if !v.flags.intersects(land) {
-            water_colour(sea - v.ground as f64)
-        } else {
-            climate_colour(params.climate, lat_lon(v.p()).0, v.ground as f64 - sea)
-        };
-        out.colors.push([r, g, b, 255]);
     }
-    out.indices = triangles.iter().flatten().copied().collect();
-    out
 }
 
-fn push_view(
+/// The data of one buffer view, written into the binary chunk once the JSON before it is known.
+enum ViewData<'a> {
+    Vec3(&'a [[f32; 3]]),
+    Rgba(&'a [[u8; 4]]),
+    /// Indices written as u16 (all below 65535).
+    U16(&'a [u32]),
+    U32(&'a [u32]),
+}
+
+impl ViewData<'_> {
+    fn byte_len(&self) -> usize {
+        match self {
+            ViewData::Vec3(v) => v.len() * 12,
+            ViewData::Rgba(c) => c.len() * 4,
+            ViewData::U16(i) => i.len() * 2,
+            ViewData::U32(i) => i.len() * 4,
+        }
+    }
+
+    /// Appends the little-endian bytes, then zeros up to a multiple of 4.
+    fn write(&self, out: &mut Vec<u8>) {
+        let little = cfg!(target_endian = "little");
+        match self {
+            ViewData::Vec3(v) if little => out.extend_from_slice(bytemuck::cast_slice(v)),
+            ViewData::Vec3(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
+            ViewData::Rgba(c) => out.extend_from_slice(bytemuck::cast_slice(c)),
+            ViewData::U16(i) => i.iter().for_each(|&i| out.extend_from_slice(&(i as u16).to_le_bytes())),
+            ViewData::U32(i) if little => out.extend_from_slice(bytemuck::cast_slice(i)),
+            ViewData::U32(i) => i.iter().for_each(|i| out.extend_from_slice(&i.to_le_bytes())),
+        }
+        out.resize(out.len().next_multiple_of(4), 0);
+    }
+}
+
+/// Adds a buffer view for `data` at the end of the binary chunk (`views`, whose padded length is
+/// `bin_len`).
+fn push_view<'a>(
     root: &mut json::Root,
-    bin: &mut Vec<u8>,
-    bytes: Vec<u8>,
+    views: &mut Vec<ViewData<'a>>,
+    bin_len: &mut usize,
+    data: ViewData<'a>,
     target: json::buffer::Target,
 ) -> json::Index<json::buffer::View> {
-    let offset = bin.len();
-    debug_assert_eq!(offset % 4, 0);
-    bin.extend_from_slice(&bytes);
-    bin.resize(bin.len().next_multiple_of(4), 0);
+    let (offset, len) = (*bin_len, data.byte_len());
+    *bin_len += len.next_multiple_of(4);
+    views.push(data);
     root.push(json::buffer::View {
         buffer: json::Index::new(0),
-        byte_length: USize64::from(bytes.len()),
+        byte_length: USize64::from(len),
         byte_offset: Some(USize64::from(offset)),
         byte_stride: None,
         target: Some(Valid(target)),
@@ -145,10 +191,6 @@ fn accessor(
     }
 }
 
-fn vec3_bytes(v: &[[f32; 3]]) -> Vec<u8> {
-    v.iter().flatten().flat_map(|x| x.to_le_bytes()).collect()
-}
-
 fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
     use json::material::{AlphaMode, PbrMetallicRoughness, StrengthFactor};
     root.push(json::Material {
@@ -164,8 +206,9 @@ fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
 
 /// Encodes meshes as one `.glb`: one glTF mesh (one TRIANGLES primitive), one node and one set of
 /// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene. Meshes
-/// without positions or indices are left out (no meshes at all: no scene, no buffer). Panics if `normals` or `colors` is neither empty nor as long as
-/// `positions`, or if an index is out of range.
+/// without positions or indices are left out (no meshes at all: no scene, no buffer). Panics if
+/// `normals` or `colors` is neither empty nor as long as `positions`, or if an index is out of
+/// range.
 pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
     use json::buffer::Target::{ArrayBuffer, ElementArrayBuffer};
     let mut root = json::Root {
@@ -176,7 +219,9 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
         },
         ..Default::default()
     };
-    let mut bin = Vec::new();
+    // The binary chunk is laid out first and written last, straight into the output.
+    let mut views = Vec::new();
+    let mut bin_len = 0;
     let mut materials: [Option<json::Index<json::Material>>; 2] = [None, None];
     let mut nodes = Vec::new();
     let mut translations = Vec::new();
@@ -195,27 +240,26 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
         }
         let bounds = (serde_json::json!(lo.map(f64::from)), serde_json::json!(hi.map(f64::from)));
         let mut attributes = BTreeMap::new();
-        let view = push_view(&mut root, &mut bin, vec3_bytes(&m.positions), ArrayBuffer);
+        let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Vec3(&m.positions), ArrayBuffer);
         let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, Some(bounds)));
         attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
         if !m.normals.is_empty() {
-            let view = push_view(&mut root, &mut bin, vec3_bytes(&m.normals), ArrayBuffer);
+            let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Vec3(&m.normals), ArrayBuffer);
             let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, None));
             attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
         }
         if !m.colors.is_empty() {
-            let bytes = m.colors.iter().flatten().copied().collect();
-            let view = push_view(&mut root, &mut bin, bytes, ArrayBuffer);
+            let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Rgba(&m.colors), ArrayBuffer);
             let acc = root.push(accessor(view, n, ComponentType::U8, Type::Vec4, true, None));
             attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
         }
         // 16-bit indices where they fit (65535 itself is reserved for primitive restart).
-        let (bytes, component) = if n <= usize::from(u16::MAX) {
-            (m.indices.iter().flat_map(|&i| (i as u16).to_le_bytes()).collect::<Vec<u8>>(), ComponentType::U16)
+        let (data, component) = if n <= usize::from(u16::MAX) {
+            (ViewData::U16(&m.indices), ComponentType::U16)
         } else {
-            (m.indices.iter().flat_map(|i| i.to_le_bytes()).collect(), ComponentType::U32)
+            (ViewData::U32(&m.indices), ComponentType::U32)
         };
-        let view = push_view(&mut root, &mut bin, bytes, ElementArrayBuffer);
+        let view = push_view(&mut root, &mut views, &mut bin_len, data, ElementArrayBuffer);
         let indices = root.push(accessor(view, m.indices.len(), component, Type::Scalar, false, None));
         let blend = m.colors.iter().any(|c| c[3] < 255);
         let mat = match materials[blend as usize] {
@@ -244,9 +288,9 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
             ..Default::default()
         }));
     }
-    if !bin.is_empty() {
+    if bin_len > 0 {
         root.push(json::Buffer {
-            byte_length: USize64::from(bin.len()),
+            byte_length: USize64::from(bin_len),
             uri: None,
             extensions: None,
             extras: Default::default(),
@@ -264,19 +308,11 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
             value["nodes"][i]["translation"] = serde_json::json!(t);
         }
     }
-    let json_bytes = serde_json::to_vec(&value).expect("glTF JSON serialises");
-    glb_container(json_bytes, bin)
-}
-
-/// GLB container: 12-byte header, JSON chunk padded with spaces, BIN chunk padded with zeros.
-fn glb_container(mut json_bytes: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
-    while !json_bytes.len().is_multiple_of(4) {
-        json_bytes.push(b' ');
-    }
-    while !bin.len().is_multiple_of(4) {
-        bin.push(0);
-    }
-    let bin_chunk = if bin.is_empty() { 0 } else { 8 + bin.len() };
+    let mut json_bytes = serde_json::to_vec(&value).expect("glTF JSON serialises");
+    // GLB container: 12-byte header, JSON chunk padded with spaces, BIN chunk (when there is
+    // data) padded with zeros.
+    json_bytes.resize(json_bytes.len().next_multiple_of(4), b' ');
+    let bin_chunk = if bin_len == 0 { 0 } else { 8 + bin_len };
     let total = 12 + 8 + json_bytes.len() + bin_chunk;
     let mut out = Vec::with_capacity(total);
     out.extend_from_slice(b"glTF");
@@ -285,11 +321,14 @@ fn glb_container(mut json_bytes: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
     out.extend_from_slice(&(json_bytes.len() as u32).to_le_bytes());
     out.extend_from_slice(b"JSON");
     out.extend_from_slice(&json_bytes);
-    if !bin.is_empty() {
-        out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+    if bin_len > 0 {
+        out.extend_from_slice(&(bin_len as u32).to_le_bytes());
         out.extend_from_slice(b"BIN\0");
-        out.extend_from_slice(&bin);
+        for data in &views {
+            data.write(&mut out);
+        }
     }
+    debug_assert_eq!(out.len(), total);
     out
 }
 

@@ -24,38 +24,64 @@ pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Vec<u8> {
     let normals = surface_normals(mesh, &triangles);
     encode_glb(&[
         terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
-        water_mesh(mesh, params, origin, &triangles),
+        water_mesh(mesh, origin, &triangles),
     ])
 }
 
 /// Of the mesh's `triangles` ([`Mesh::triangles`]), those with at least one submerged corner,
 /// at water altitude (dry corners at the ground, so the surface meets the shore); colour by
-/// depth.
-pub fn water_mesh(mesh: &Mesh, params: &Params, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh {
-    let mut out = GlbMesh { translation: Some(to_gltf_axes(origin.to_array())), ..GlbMesh::default() };
-    let mut slot = vec![u32::MAX; mesh.vertices.len()];
-    let up = to_gltf_axes(origin.normalize_or(DVec3::X).to_array()).map(|x| x as f32);
-    for &corners in triangles {
-        if !corners.iter().any(|&v| mesh.vertices[v as usize].submerged()) {
-            continue;
+/// depth. Vertices are numbered in order of first use.
+pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh {
+    use rayon::prelude::*;
+    let vertices = &mesh.vertices;
+    let wet: Vec<[u32; 3]> =
+        triangles.par_iter().copied().filter(|c| c.iter().any(|&v| vertices[v as usize].submerged())).collect();
+    // Numbering in order of first use is sequential; the attributes are computed in parallel.
+    let mut slot = vec![u32::MAX; vertices.len()];
+    let mut used = Vec::new();
+    let mut indices = Vec::with_capacity(wet.len() * 3);
+    for &v in wet.iter().flatten() {
+        if slot[v as usize] == u32::MAX {
+            slot[v as usize] = used.len() as u32;
+            used.push(v);
         }
-        for &v in &corners {
-            if slot[v as usize] == u32::MAX {
-                let vert = &mesh.vertices[v as usize];
+        indices.push(slot[v as usize]);
+    }
+    let up = to_gltf_axes(origin.normalize_or(DVec3::X).to_array()).map(|x| x as f32);
+    let at = |v: &u32| &vertices[*v as usize];
+    GlbMesh {
+        positions: used
+            .par_iter()
+            .map(at)
+            .map(|vert| {
                 let level = vert.water.max(vert.ground) as f64;
                 let p = lift(vert.p(), mesh.radius, level) - origin;
-                slot[v as usize] = out.positions.len() as u32;
-                out.positions.push(to_gltf_axes(p.to_array()).map(|x| x as f32));
+                to_gltf_axes(p.to_array()).map(|x| x as f32)
+            })
+            .collect(),
+        normals: used
+            .par_iter()
+            .map(at)
+            .map(|vert| {
                 let n = to_gltf_axes(vert.p().normalize().to_array()).map(|x| x as f32);
-                out.normals.push(if n.iter().all(|x| x.is_finite()) { n } else { up });
+                if n.iter().all(|x| x.is_finite()) {
+                    n
+                } else {
+                    up
+                }
+            })
+            .collect(),
+        colors: used
+            .par_iter()
+            .map(at)
+            .map(|vert| {
                 let [r, g, b] = water_colour((vert.water - vert.ground).max(0.0) as f64);
-                out.colors.push([r, g, b, WATER_ALPHA]);
-            }
-            out.indices.push(slot[v as usize]);
-        }
+                [r, g, b, WATER_ALPHA]
+            })
+            .collect(),
+        indices,
+        translation: Some(to_gltf_axes(origin.to_array())),
     }
-    let _ = params;
-    out
 }
 
 #[cfg(test)]
@@ -91,7 +117,7 @@ mod tests {
         let glb = view_glb(a.mesh(), &p, origin);
         assert_eq!(&glb[..4], b"glTF");
         assert_eq!(view_glb(a.mesh(), &p, origin), glb);
-        let water = water_mesh(a.mesh(), &p, origin, &a.mesh().triangles());
+        let water = water_mesh(a.mesh(), origin, &a.mesh().triangles());
         assert!(!water.indices.is_empty());
         assert!(water.indices.iter().all(|&i| (i as usize) < water.positions.len()));
     }

@@ -93,7 +93,7 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &triangles, &normals);
     terrain.translation = None;
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
-    let mut water = water_mesh(&surface, params, origin, &triangles);
+    let mut water = water_mesh(&surface, origin, &triangles);
     water.translation = None;
     let glb = encode_glb(&[terrain, water]);
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
