@@ -185,3 +185,33 @@ fn a_batch_refuses_an_edge_that_is_not_ready() {
     let e = (0..m.edges.len() as u32).find(|&e| m.split_site(e).is_none()).unwrap();
     m.split_edges(&[e], |_| unreachable!("the diamond of an edge that is not ready is never made"));
 }
+
+#[test]
+fn a_face_kind_is_kept_by_its_three_edges() {
+    let mut m = sphere(400);
+    let f = 7;
+    assert!((0..m.faces.len() as u32).all(|g| m.face_kind(g) == FaceKind::Sea));
+    m.set_face_kind(f, FaceKind::Land);
+    for e in m.faces[f as usize].e {
+        let edge = &m.edges[e as usize];
+        assert_eq!(edge.face_kind(f), FaceKind::Land);
+        // The neighbour across the edge is still sea.
+        let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+        assert_eq!(edge.face_kind(g), FaceKind::Sea);
+        assert_eq!(m.face_kind(g), FaceKind::Sea);
+        assert_eq!(edge.face_kinds().iter().filter(|&&k| k == FaceKind::Land).count(), 1);
+    }
+    assert_eq!((0..m.faces.len() as u32).filter(|&g| m.face_kind(g) == FaceKind::Land).count(), 1);
+    // Edge kinds not yet following the faces: validation names the mismatch.
+    let err = m.validate().unwrap_err();
+    assert!(err.contains("lies between faces of kinds"), "{err}");
+    crate::build::continents::classify(&mut m);
+    m.validate().unwrap();
+    m.set_face_kind(f, FaceKind::Sea);
+    assert!(m.edges.iter().all(|e| e.land == 0));
+    // One edge alone saying a face is land: the face's edges disagree.
+    let e = m.faces[f as usize].e[1] as usize;
+    m.edges[e].land = if m.edges[e].f[0] == f { 1 } else { 2 };
+    let err = m.validate().unwrap_err();
+    assert!(err.contains("disagree on its kind"), "{err}");
+}

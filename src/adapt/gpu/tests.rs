@@ -83,7 +83,7 @@ fn assert_same_mesh(cpu: &Mesh, dev: &Mesh, what: &str) {
         cpu.edges.len(),
         &|i| {
             let (x, y) = (&cpu.edges[i], &dev.edges[i]);
-            x == y || (!exact && (x.v, x.f, x.level, x.kind) == (y.v, y.f, y.level, y.kind))
+            x == y || (!exact && (x.v, x.f, x.level, x.kind, x.land) == (y.v, y.f, y.level, y.kind, y.land))
         },
         &|i| format!("{i}: CPU {:?} GPU {:?}", cpu.edges[i], dev.edges[i]),
     );
