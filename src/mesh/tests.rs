@@ -209,9 +209,14 @@ fn a_face_kind_is_kept_by_its_three_edges() {
     m.validate().unwrap();
     m.set_face_kind(f, FaceKind::Sea);
     assert!(m.edges.iter().all(|e| e.land == 0));
+    crate::build::continents::classify(&mut m);
+    m.validate().unwrap();
     // One edge alone saying a face is land: the face's edges disagree.
     let e = m.faces[f as usize].e[1] as usize;
     m.edges[e].land = if m.edges[e].f[0] == f { 1 } else { 2 };
     let err = m.validate().unwrap_err();
     assert!(err.contains("disagree on its kind"), "{err}");
+    m.edges[e].land = 0b100;
+    let err = m.validate().unwrap_err();
+    assert!(err.contains("land bits 0b100"), "{err}");
 }

@@ -56,9 +56,12 @@ impl Mesh {
             if uses[ei] != 2 || e.f.contains(&NONE) {
                 return Err(format!("edge {ei} is used by {} faces, not 2", uses[ei]));
             }
+            if e.land > 3 {
+                return Err(format!("edge {ei} has land bits {:#b} beyond its two faces", e.land));
+            }
             let [a, b] = e.face_kinds();
             let expected = EdgeKind::between(a, b);
-            if e.land > 3 || (e.kind != expected && !(e.kind == EdgeKind::River && expected == EdgeKind::Continent)) {
+            if e.kind != expected && !(e.kind == EdgeKind::River && expected == EdgeKind::Continent) {
                 return Err(format!("edge {ei} of kind {:?} lies between faces of kinds {a:?} and {b:?}", e.kind));
             }
         }
