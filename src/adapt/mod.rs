@@ -57,11 +57,13 @@ pub struct AdaptStats {
 /// Wall time of each adaption stage (`AdaptStats::stage_ms`), milliseconds.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct StageTimes {
-    /// State update: split wishes of every edge, then of the edges splits touched.
+    /// State update: split wishes of every edge (and again after a compaction, or of the
+    /// edges collapses restored).
     pub state: f64,
     /// Split-list compaction: blocker chains to the ready edges.
     pub select: f64,
-    /// Edge splits (new vertices, then topology).
+    /// Edge splits (new vertices, then topology), with the split wishes of the edges each
+    /// split makes or changes (the state update of the refining passes).
     pub split: f64,
     /// Collapse marks (demanded edges, candidates) and vertex collapses.
     pub collapse: f64,
@@ -463,12 +465,10 @@ impl Adapter {
             }
             let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
-            let splits = split::apply_splits(&mut self.mesh, &ready, &self.params);
+            let answers = split::apply_splits(&mut self.mesh, &ready, &self.params, view);
+            let splits = ready.len();
+            state::record_splits(&mut wants, &ready, &answers);
             lap(&mut t, &mut stats.stage_ms.split);
-            if splits > 0 {
-                state::update_wants(&self.mesh, view, &mut wants, &ready);
-                lap(&mut t, &mut stats.stage_ms.state);
-            }
             let mut collapses = 0;
             if !refine_only && (look_for_collapses || splits == 0) {
                 let demanded = state::demanded(&self.mesh, &wants);

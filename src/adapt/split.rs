@@ -3,6 +3,8 @@
 //! (positions by eq. 2 / eq. 7–9, altitudes by step 6 and eq. 10–12) and makes the topology
 //! change.
 
+use super::camera::View;
+use super::state::wants_edge;
 use crate::mesh::altitude::split_vertex;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -95,10 +97,12 @@ pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
 }
 
 /// Splits the given ready edges (see [`Mesh::split_edges`]): each new vertex is computed from its
-/// diamond and written with its edges and faces in the same parallel pass. Returns the number of
-/// splits; the split edges' slots now hold their first halves.
-pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params) -> usize {
-    mesh.split_edges(ready, |d| split_vertex(d, params))
+/// diamond and written with its edges and faces in the same parallel pass, and each of the four
+/// edges is asked right there whether it wants a split for `view` (the state update of the
+/// edges a split makes or changes, while their end points are in cache). Returns the answers
+/// for `[e1, e2, e3, e4]`, split by split; the split edges' slots now hold their first halves.
+pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params, view: &View) -> Vec<[bool; 4]> {
+    mesh.split_edges_judged(ready, |d| split_vertex(d, params), |edge, mid| wants_edge(view, edge, mid))
 }
 
 #[cfg(test)]

@@ -8,15 +8,21 @@
 
 use super::camera::View;
 use crate::mesh::prefetch::{prefetch, prefetch_vertex};
-use crate::mesh::{CollapseSite, EdgeKind, Mesh, VertexFlags};
+use crate::mesh::{CollapseSite, Edge, EdgeKind, Mesh, VertexFlags};
+use glam::DVec3;
 use rayon::prelude::*;
 
 /// Whether edge `e` wants to be split for `view` (always inlined, like the criterion: the
 /// state update's loop is this and nothing else).
 #[inline(always)]
 pub fn wants(mesh: &Mesh, view: &View, e: u32) -> bool {
-    let edge = &mesh.edges[e as usize];
-    view.wants_split(edge.lod.len() as f64, mesh.midpoint(e), edge.lod.radius() as f64, edge.kind == EdgeKind::Sea)
+    wants_edge(view, &mesh.edges[e as usize], mesh.midpoint(e))
+}
+
+/// Whether `edge`, with midpoint `mid`, wants to be split for `view`.
+#[inline(always)]
+pub fn wants_edge(view: &View, edge: &Edge, mid: DVec3) -> bool {
+    view.wants_split(edge.lod.len() as f64, mid, edge.lod.radius() as f64, edge.kind == EdgeKind::Sea)
 }
 
 /// [`wants`] of the edges `edge_at(0..n)`, in order. Chunks run in parallel; each asks for the
@@ -45,15 +51,15 @@ pub fn edge_wants(mesh: &Mesh, view: &View) -> Vec<bool> {
     wants_of(mesh, view, mesh.edges.len(), |k| k as u32)
 }
 
-/// Brings `flags` up to date after splits: an edge's answer depends only on its own bounds and
-/// end points, so only the split edges' slots (`changed`) and the appended edges need it.
-pub fn update_wants(mesh: &Mesh, view: &View, flags: &mut Vec<bool>, changed: &[u32]) {
-    let old = flags.len();
-    flags.extend(wants_of(mesh, view, mesh.edges.len() - old, |k| (old + k) as u32));
-    let redo = wants_of(mesh, view, changed.len(), |k| changed[k]);
-    for (&e, w) in changed.iter().zip(redo) {
-        flags[e as usize] = w;
+/// Brings `flags` up to date after the splits of `split` (in order): `answers` are the
+/// splits' own state updates of their edges `[e1, e2, e3, e4]` (see
+/// [`super::split::apply_splits`]); `e1` took the split edge's slot, the others were appended
+/// three by three.
+pub fn record_splits(flags: &mut Vec<bool>, split: &[u32], answers: &[[bool; 4]]) {
+    for (&e, a) in split.iter().zip(answers) {
+        flags[e as usize] = a[0];
     }
+    flags.extend(answers.iter().flat_map(|a| [a[1], a[2], a[3]]));
 }
 
 /// Brings `flags` up to date after collapses: the removed edges want nothing, and each restored

@@ -147,12 +147,19 @@ impl Buffers {
     }
 
     /// The `i`-th split of a batch (see [`super::Mesh::split_ids`] for its ids): the diamond's
-    /// edge and faces become four and four around `vertex`.
+    /// edge and faces become four and four around `vertex`. Returns the edges `[e1, e2, e3,
+    /// e4]` as written, each with its midpoint (as [`super::Mesh::midpoint`] computes it).
     ///
     /// # Safety
     /// The buffers hold room for the batch's new slots, `diamond` was read from them for a
     /// ready edge, and no other operation of the batch owns that edge or its faces.
-    pub unsafe fn split(&self, diamond: &Diamond, mut vertex: Vertex, kinds: [EdgeKind; 4], i: usize) {
+    pub unsafe fn split(
+        &self,
+        diamond: &Diamond,
+        mut vertex: Vertex,
+        kinds: [EdgeKind; 4],
+        i: usize,
+    ) -> [(Edge, DVec3); 4] {
         let SplitSite { edge: e1, a, b, t, d, f1, f2 } = diamond.site;
         let (nv, ne, nf) = self.sizes;
         let m = (nv + i) as u32;
@@ -174,18 +181,24 @@ impl Buffers {
         self.f.add(f4 as usize).write(Face { e: [old2.e[2], e3, e4] });
         let edge = |v: [u32; 2], f: [u32; 2], kind, land, p: DVec3, q: DVec3| {
             let length = p.distance(q);
-            let offset = ((p + q) * 0.5).distance(parent_mid);
+            let mid = (p + q) * 0.5;
+            let offset = mid.distance(parent_mid);
             let (len, radius) = (parent.lod.len() as f64, parent.lod.radius() as f64);
             let lod = Lod::new(length.min(len), (LOD_RADIUS as f64 * length).min(radius - offset));
-            Edge { v, f, lod, level, kind, land }
+            (Edge { v, f, lod, level, kind, land }, mid)
         };
         // f1 and f3 are of f1's kind, f2 and f4 of f2's.
         let [k1, k2] = parent.face_kinds();
         let (inner1, inner2) = (Edge::land_bits([k1, k1]), Edge::land_bits([k2, k2]));
-        self.e.add(e1 as usize).write(edge([a, m], [f1, f2], kinds[0], parent.land, pa, pm));
-        self.e.add(e2 as usize).write(edge([m, t], [f1, f3], kinds[1], inner1, pm, pt));
-        self.e.add(e3 as usize).write(edge([m, b], [f3, f4], kinds[2], parent.land, pm, pb));
-        self.e.add(e4 as usize).write(edge([m, d], [f4, f2], kinds[3], inner2, pm, pd));
+        let made = [
+            edge([a, m], [f1, f2], kinds[0], parent.land, pa, pm),
+            edge([m, t], [f1, f3], kinds[1], inner1, pm, pt),
+            edge([m, b], [f3, f4], kinds[2], parent.land, pm, pb),
+            edge([m, d], [f4, f2], kinds[3], inner2, pm, pd),
+        ];
+        for (e, (made, _)) in [e1, e2, e3, e4].into_iter().zip(&made) {
+            self.e.add(e as usize).write(*made);
+        }
         vertex.edge = e1;
         vertex.parent_lod = parent.lod;
         vertex.flags.insert(kinds.iter().fold(VertexFlags::empty(), |acc, k| acc | k.flag()));
@@ -193,6 +206,7 @@ impl Buffers {
         self.relink(old1.e[1], f1, f3);
         self.relink(old2.e[2], f2, f4);
         self.move_link(b, e1, e3);
+        made
     }
 
     /// Collapses the vertex at `site`, restoring the edge and the two faces it was split from;

@@ -7,7 +7,8 @@
 //! faces `f3` and `f4` take the halves at `b`.
 
 use super::batch::Buffers;
-use super::{Diamond, EdgeKind, FaceKind, Mesh, Vertex, NONE};
+use super::{Diamond, Edge, EdgeKind, FaceKind, Mesh, Vertex, NONE};
+use glam::DVec3;
 
 /// Where a split happens: the edge, its end points and the corners opposite it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -114,6 +115,18 @@ impl Mesh {
     where
         F: Fn(&Diamond) -> (Vertex, [EdgeKind; 4]) + Sync,
     {
+        self.split_edges_judged(edges, make, |_, _| ()).len()
+    }
+
+    /// [`Mesh::split_edges`], asking `judge` about each split's four edges `[e1, e2, e3, e4]`
+    /// as written, with their midpoints, while they are at hand: returns its answers, split by
+    /// split in the order of `edges`.
+    pub fn split_edges_judged<F, J, T>(&mut self, edges: &[u32], make: F, judge: J) -> Vec<[T; 4]>
+    where
+        F: Fn(&Diamond) -> (Vertex, [EdgeKind; 4]) + Sync,
+        J: Fn(&Edge, DVec3) -> T + Sync,
+        T: Send,
+    {
         use rayon::prelude::*;
         let n = edges.len();
         self.vertices.reserve(n);
@@ -130,25 +143,32 @@ impl Mesh {
         // Each thread splits whole chunks in order, so it can ask for the memory of the next
         // splits of its chunk ahead of time (see `Buffers::prefetch_split`).
         const CHUNK: usize = 512;
-        edges.par_chunks(CHUNK).enumerate().for_each(|(c, chunk)| {
-            for (k, &e) in chunk.iter().enumerate() {
-                // SAFETY: see `Buffers::split` and `Buffers::prefetch_split`; the reservations
-                // above hold the new slots, and no other split writes this split's diamond.
-                unsafe {
-                    bufs.prefetch_split(chunk, k);
-                    let diamond = bufs.diamond(e, radius);
-                    let (vertex, kinds) = make(&diamond);
-                    bufs.split(&diamond, vertex, kinds, c * CHUNK + k);
-                }
-            }
-        });
+        let answers: Vec<[T; 4]> = edges
+            .par_chunks(CHUNK)
+            .enumerate()
+            .flat_map_iter(|(c, chunk)| {
+                let (bufs, judge, make) = (&bufs, &judge, &make);
+                chunk.iter().enumerate().map(move |(k, &e)| {
+                    // SAFETY: see `Buffers::split` and `Buffers::prefetch_split`; the
+                    // reservations above hold the new slots, and no other split writes this
+                    // split's diamond.
+                    let made = unsafe {
+                        bufs.prefetch_split(chunk, k);
+                        let diamond = bufs.diamond(e, radius);
+                        let (vertex, kinds) = make(&diamond);
+                        bufs.split(&diamond, vertex, kinds, c * CHUNK + k)
+                    };
+                    made.map(|(edge, mid)| judge(&edge, mid))
+                })
+            })
+            .collect();
         // SAFETY: every slot up to the new lengths was written by exactly one split above.
         unsafe {
             self.vertices.set_len(nv + n);
             self.edges.set_len(ne + 3 * n);
             self.faces.set_len(nf + 2 * n);
         }
-        n
+        answers
     }
 
     /// Entities of the `i`-th split of a batch at `site`: new vertex `m`, edges `e1` (the split
