@@ -1,4 +1,4 @@
-// Split-list compaction (paper §5.3, Algorithm 2 steps 1-2): the twin of `select_splits` in
+// Split-list compaction (paper §5.3, Algorithm 2 steps 1-2): the twin of `Selection::select` in
 // `src/adapt/split.rs` (which follows all chains a step per round instead of one thread per
 // chain). Every wanted edge follows its chain of blocking refinement edges to the edge that is
 // ready (the refinement edge of both its faces); a chain stops where it meets an edge another

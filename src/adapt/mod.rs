@@ -456,6 +456,7 @@ impl Adapter {
         // the newest vertices of the faces a collapse restores can have become collapsible;
         // elsewhere neither a vertex's faces nor the demanded edges changed.
         let mut apexes: Option<Vec<u32>> = None;
+        let mut selection = split::Selection::default();
         for _ in 0..MAX_PASSES {
             stats.passes += 1;
             // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
@@ -463,7 +464,7 @@ impl Adapter {
             if refine_only && over_cap {
                 break;
             }
-            let ready = if over_cap { Vec::new() } else { split::select_splits(&self.mesh, &wants) };
+            let ready = if over_cap { Vec::new() } else { selection.select(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
             let answers = split::apply_splits(&mut self.mesh, &ready, &self.params, view);
             let splits = ready.len();

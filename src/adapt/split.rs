@@ -11,9 +11,16 @@ use crate::params::Params;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// Follows the blocker chain of every wanted edge: returns flags of the edges the chains
-/// reached besides the wanted ones, and the chain ends, which are ready (unordered, possibly
-/// repeated).
+/// The chain ends that [`follow_chains`] found: the wanted edges that are ready, in the order
+/// of the wanted list, and the ends of longer chains (unordered, possibly repeated).
+struct Ends {
+    wanted: Vec<u32>,
+    blocking: Vec<u32>,
+}
+
+/// Follows the blocker chain of every wanted edge (`wanted`, listing the set `wants`): returns
+/// the chain ends, which are ready, and the edges the chains reached besides the wanted ones,
+/// which are flagged in `reached` (all clear before).
 ///
 /// The chains are followed all at once, one step per round: each round looks up the blocking
 /// edges of the whole frontier in one parallel, prefetching loop (the lookups wait on scattered
@@ -21,13 +28,14 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// and a chain that reaches a wanted or flagged edge stops there: the rest of it is followed
 /// once, by whichever chain got there first. (Two chains that reach an edge in the same round
 /// may both take it; that only repeats work.)
-fn follow_chains(mesh: &Mesh, wants: &[bool]) -> (Vec<AtomicBool>, Vec<u32>) {
-    // Written out, not left to zero pages: scattered first touches of fresh pages would each
-    // fault (measured: 4-12 ms a pass instead of 0.4-5 on a mesh of 2.6M edges).
-    let reached: Vec<AtomicBool> = (0..wants.len()).into_par_iter().map(|_| AtomicBool::new(false)).collect();
-    let mut frontier = set_flags(wants);
-    let mut ends = Vec::new();
-    while !frontier.is_empty() {
+fn follow_chains(mesh: &Mesh, wants: &[bool], wanted: Vec<u32>, reached: &[AtomicBool]) -> (Ends, Vec<u32>) {
+    let mut frontier = wanted;
+    let mut ends = Ends { wanted: Vec::new(), blocking: Vec::new() };
+    let mut visited = Vec::new();
+    for round in 0.. {
+        if frontier.is_empty() {
+            break;
+        }
         let blockers = mesh.blocking_edges(&frontier);
         let (done, next): (Vec<u32>, Vec<u32>) = frontier
             .par_iter()
@@ -53,15 +61,28 @@ fn follow_chains(mesh: &Mesh, wants: &[bool]) -> (Vec<AtomicBool>, Vec<u32>) {
                     (a, b)
                 },
             );
-        ends.extend(done);
+        if round == 0 {
+            ends.wanted = done;
+        } else {
+            ends.blocking.extend(done);
+        }
+        visited.extend_from_slice(&next);
         frontier = next;
     }
-    (reached, ends)
+    (ends, visited)
+}
+
+/// `n` clear flags, written out rather than left to zero pages: scattered first touches of
+/// fresh pages would each fault (measured: 4-12 ms a pass instead of 0.4-5 on a mesh of 2.6M
+/// edges).
+fn clear_flags(n: usize) -> Vec<AtomicBool> {
+    (0..n).into_par_iter().map(|_| AtomicBool::new(false)).collect()
 }
 
 /// Whether each edge is wanted or on a wanted edge's blocker chain.
 pub fn chain_flags(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
-    let (reached, _) = follow_chains(mesh, wants);
+    let reached = clear_flags(wants.len());
+    follow_chains(mesh, wants, set_flags(wants), &reached);
     reached.into_par_iter().zip(wants).map(|(r, &w)| w || r.into_inner()).collect()
 }
 
@@ -86,14 +107,49 @@ pub fn set_flags(flags: &[bool]) -> Vec<u32> {
         .collect()
 }
 
-/// The edges to split this pass: every wanted edge that is the refinement edge of both its
-/// faces, and for the others the refinement edge that blocks them (followed until one is
-/// ready). Sorted and without repeats, so the pass is deterministic.
-pub fn select_splits(mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
-    let (_, mut ends) = follow_chains(mesh, wants);
-    ends.par_sort_unstable();
-    ends.dedup();
-    ends
+/// Picks the edges to split, pass after pass, keeping the chains' flags between passes (they
+/// are cleared where a pass set them instead of made anew for every edge).
+#[derive(Default)]
+pub struct Selection {
+    reached: Vec<AtomicBool>,
+}
+
+impl Selection {
+    /// The edges to split this pass: every wanted edge that is the refinement edge of both its
+    /// faces, and for the others the refinement edge that blocks them (followed until one is
+    /// ready). Sorted and without repeats, so the pass is deterministic.
+    pub fn select(&mut self, mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
+        if self.reached.len() < wants.len() {
+            // To the edge buffer's capacity: the splits grow the edges in few, doubling steps.
+            self.reached = clear_flags(mesh.edges.capacity().max(wants.len()));
+        }
+        let (ends, visited) = follow_chains(mesh, wants, set_flags(wants), &self.reached);
+        visited.par_iter().for_each(|&e| self.reached[e as usize].store(false, Ordering::Relaxed));
+        // The ready wanted edges come in order (the wanted list is); the ends of longer chains
+        // are not wanted edges, so sorting them alone and merging gives the sorted union.
+        let mut blocking = ends.blocking;
+        blocking.par_sort_unstable();
+        blocking.dedup();
+        merge_sorted(&ends.wanted, &blocking)
+    }
+}
+
+/// The sorted union of two sorted lists without common elements.
+fn merge_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        if a[i] < b[j] {
+            out.push(a[i]);
+            i += 1;
+        } else {
+            out.push(b[j]);
+            j += 1;
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend_from_slice(&b[j..]);
+    out
 }
 
 /// Splits the given ready edges (see [`Mesh::split_edges`]): each new vertex is computed from its

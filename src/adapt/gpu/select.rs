@@ -1,5 +1,5 @@
 //! Split-list compaction on the device (paper §5.3, Algorithm 2 steps 1–2):
-//! `shaders/adapt_select.wgsl`, the twin of [`crate::adapt::split::select_splits`]. Chains of
+//! `shaders/adapt_select.wgsl`, the twin of [`crate::adapt::split::Selection::select`]. Chains of
 //! blocking edges are walked with an atomic flag per edge; the ready edges are compacted into
 //! a list in edge order by a prefix sum over blocks (`shaders/adapt_scan.wgsl`), so the list
 //! is the CPU's. The chain flags left in `seen` are the demanded edges of
