@@ -5,7 +5,10 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
-use super::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
+use super::terrain::{
+    altitude_random, corner_directions, lift, split_position, split_seed, tangent_towards, weighted_position,
+    well_shaped_towards,
+};
 use super::{split_kinds, Diamond, EdgeKind, Tangent, Vertex, VertexFlags};
 use crate::params::Params;
 use crate::rng::{salt, unit};
@@ -55,20 +58,14 @@ fn least_steep(neighbours: &[(f64, f64); 4]) -> f64 {
     best.1
 }
 
-/// Horizontal distance between two planet points (on the base sphere).
-fn horizontal(p: DVec3, q: DVec3, radius: f64) -> f64 {
-    p.normalize().distance(q.normalize()) * radius
-}
-
 /// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`.
 pub fn split_vertex(d: &Diamond, p: &Params) -> (Vertex, [EdgeKind; 4]) {
     let seed = split_seed(d);
     let [f1, f2] = d.edge.face_kinds();
     let kinds = split_kinds(d.edge.kind, f1, f2);
-    let pos = split_position(d, seed, d.edge.kind, p.min_river_length_m);
     match d.edge.kind {
-        EdgeKind::Continent => continent_vertex(d, p, seed, pos, kinds),
-        _ => wet_vertex(d, p, seed, pos, kinds),
+        EdgeKind::Continent => continent_vertex(d, p, seed, kinds),
+        kind => wet_vertex(d, p, seed, split_position(d, seed, kind, p.min_river_length_m), kinds),
     }
 }
 
@@ -112,17 +109,17 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
 /// A continent split: ground altitude by midpoint displacement kept inside the riverbed bounds
 /// (eq. 11) and the maximum ground slope (eq. 12); or, where the rules allow it, the spring of a
 /// new river arm flowing into a neighbouring river vertex (eq. 10).
-fn continent_vertex(
-    d: &Diamond,
-    p: &Params,
-    seed: u32,
-    pos: DVec3,
-    mut kinds: [EdgeKind; 4],
-) -> (Vertex, [EdgeKind; 4]) {
+fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]) -> (Vertex, [EdgeKind; 4]) {
     let around = [d.a(), d.t(), d.b(), d.d()]; // the far ends of e1, e2, e3, e4
     let r = d.radius;
     let xi = altitude_random(seed);
-    let lens = around.map(|v| horizontal(pos, v.p(), r));
+    // Eq. 2's position (see `split_position`) and its direction, from which the horizontal
+    // distances to the neighbours (on the base sphere) and the lift of eq. 1 follow.
+    let corners = corner_directions(d);
+    let (_, dir) = well_shaped_towards(d, &corners, weighted_position(d, seed));
+    let lens = [0, 2, 1, 3].map(|i| dir.distance(corners[i]) * r);
+    // Eq. 1 (`lift`) for the direction at hand.
+    let lifted = |g: f64| dir * (r + g);
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
@@ -167,7 +164,7 @@ fn continent_vertex(
             let top = cap.min(p.max_river_altitude_m);
             let g = floor + (top - floor) * unit(seed, salt::RIVER) * 0.5;
             kinds[i] = EdgeKind::River;
-            let mut v = Vertex::new(lift(pos, r, g), seed);
+            let mut v = Vertex::new(lifted(g), seed);
             v.ground = g as f32;
             v.water = g as f32;
             v.flags = VertexFlags::RIVER | VertexFlags::REFINED;
@@ -197,7 +194,7 @@ fn continent_vertex(
     // levels, which leaves a vertex below one river's surface dry when the others are lower.)
     let surface = around.iter().filter(|v| is_wet(v)).map(|v| v.water).fold(f32::MIN, f32::max);
     let water = if (g as f32) < surface { surface as f64 } else { g };
-    let mut v = Vertex::new(lift(pos, r, g), seed);
+    let mut v = Vertex::new(lifted(g), seed);
     v.ground = g as f32;
     v.water = water as f32;
     v.flags = VertexFlags::REFINED;

@@ -70,7 +70,9 @@ pub fn split_position(d: &Diamond, seed: u32, kind: EdgeKind, min_river_length: 
 /// median face quality falls from ~0.75 to ~0.04 over 17 levels (slivers a thousand times longer
 /// than wide), and sliver diamonds make the slope bounds of eq. 12 unsatisfiable. Holding each
 /// split's faces at this quality keeps the distribution level (1 % of faces below ~0.25, none
-/// below ~0.15, at every level we measured) while most splits keep a random offset.
+/// below ~0.15, at every level we measured) while about half the splits keep a random offset
+/// (continent splits of the benchmark's orbit view: 30 % the full one, 20 % one pulled back,
+/// the rest the edge's centre).
 pub const MIN_SPLIT_QUALITY: f64 = 0.4;
 
 /// The randomised position `p` (eq. 2 or eq. 7), or, when that would make one of the four new
@@ -79,26 +81,89 @@ pub const MIN_SPLIT_QUALITY: f64 = 0.4;
 /// never folds a face: it halves both old faces). A function of the same four vertices and
 /// seed, so still reproducible.
 pub fn well_shaped(diamond: &Diamond, p: DVec3) -> DVec3 {
-    let [a, b, t, d] = diamond.positions().map(|p| p.normalize());
+    well_shaped_towards(diamond, &corner_directions(diamond), p).0
+}
+
+/// Unit vectors from the planet's centre towards the diamond's corners `a, b, t, d`.
+#[inline]
+pub fn corner_directions(diamond: &Diamond) -> [DVec3; 4] {
+    diamond.positions().map(DVec3::normalize)
+}
+
+/// [`well_shaped`] given the [`corner_directions`]: the point and its own direction (which
+/// the shape test computes anyway, and lifting and horizontal distances need again).
+pub fn well_shaped_towards(diamond: &Diamond, corners: &[DVec3; 4], p: DVec3) -> (DVec3, DVec3) {
+    let [a, b, t, d] = *corners;
     let c = edge_centre(diamond);
-    for scale in [1.0, 0.5, 0.25] {
-        // `p` itself at full scale (`c + (p - c)` can differ from `p` in the last bit).
-        let x = if scale == 1.0 { p } else { c + (p - c) * scale };
-        let m = x.normalize();
-        let q = face_quality(m, t, a).min(face_quality(m, b, t)).min(face_quality(m, a, d)).min(face_quality(m, d, b));
-        if q >= MIN_SPLIT_QUALITY {
-            return x;
+    let pairs = [[t, a], [b, t], [a, d], [d, b]];
+    // The three candidates' directions at once: they do not depend on each other, so their
+    // square roots overlap.
+    let xs = [p, c + (p - c) * 0.5, c + (p - c) * 0.25];
+    let ms = xs.map(DVec3::normalize);
+    for (x, m) in xs.into_iter().zip(ms) {
+        match shape_verdict(m, &pairs) {
+            Some(true) => return (x, m),
+            Some(false) => {}
+            None => return well_shaped_by_quality(c, &xs, &ms, &pairs),
         }
     }
-    c
+    (c, c.normalize())
+}
+
+/// Whether the triangles `m, y, z` for the `pairs` `[y, z]` all have a [`face_quality`] of
+/// at least [`MIN_SPLIT_QUALITY`], decided without the qualities' four divisions where that
+/// gives the same answer bit for bit: `q = k A / S` reaches the bound when `k A - MIN S > 0`,
+/// and where that gap exceeds `1e-9 S` in size (`|q| <= 1`, so it is then at least 1e-9 of
+/// either side) the roundings of the product, the difference and the division (~1e-16 each)
+/// cannot change its sign. So all four surely pass, or one surely fails (the smallest quality
+/// is then below the bound whatever the others); otherwise — a triangle within the margin,
+/// degenerate or not finite — there is no verdict.
+#[inline]
+fn shape_verdict(m: DVec3, pairs: &[[DVec3; 2]; 4]) -> Option<bool> {
+    let (mut pass, mut fail) = (true, false);
+    for &[y, z] in pairs {
+        let (scaled_area, sides) = quality_parts(m, y, z);
+        let gap = scaled_area - MIN_SPLIT_QUALITY * sides;
+        let margin = 1e-9 * sides;
+        pass &= gap > margin;
+        fail |= gap < -margin;
+    }
+    if pass {
+        Some(true)
+    } else if fail {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// [`well_shaped_towards`] by the qualities themselves, for the rare candidate that
+/// [`shape_verdict`] leaves open. Out of line and cold: inlined, it slowed every split.
+#[cold]
+#[inline(never)]
+fn well_shaped_by_quality(c: DVec3, xs: &[DVec3; 3], ms: &[DVec3; 3], pairs: &[[DVec3; 2]; 4]) -> (DVec3, DVec3) {
+    for (&x, &m) in xs.iter().zip(ms) {
+        let q = pairs.map(|[y, z]| face_quality(m, y, z));
+        if q[0].min(q[1]).min(q[2]).min(q[3]) >= MIN_SPLIT_QUALITY {
+            return (x, m);
+        }
+    }
+    (c, c.normalize())
 }
 
 /// Shape quality of the triangle `x, y, z` (unit vectors, counter-clockwise seen from outside):
 /// `4 sqrt(3) area / (sum of squared sides)`, 1 for an equilateral triangle, 0 for a degenerate
 /// one, negative when the triangle is folded over (clockwise).
 pub fn face_quality(x: DVec3, y: DVec3, z: DVec3) -> f64 {
+    let (scaled_area, sides) = quality_parts(x, y, z);
+    scaled_area / sides
+}
+
+/// The numerator and denominator of [`face_quality`].
+#[inline]
+fn quality_parts(x: DVec3, y: DVec3, z: DVec3) -> (f64, f64) {
     let twice_area = x.cross(y).dot(z);
-    2.0 * 3f64.sqrt() * twice_area / (x.distance_squared(y) + y.distance_squared(z) + z.distance_squared(x))
+    (2.0 * 3f64.sqrt() * twice_area, x.distance_squared(y) + y.distance_squared(z) + z.distance_squared(x))
 }
 
 /// Eq. 1: lifts a point onto the sphere of radius `radius + altitude` (centre at the origin).
@@ -118,4 +183,101 @@ pub fn tangent_towards(from: DVec3, to: DVec3) -> DVec3 {
     let up = from.normalize();
     let d = to - from;
     (d - up * d.dot(up)).normalize_or_zero()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The shape test as the qualities give it (the definition `shape_verdict` must agree with).
+    fn by_quality(m: DVec3, pairs: &[[DVec3; 2]; 4]) -> bool {
+        let q = pairs.map(|[y, z]| face_quality(m, y, z));
+        q[0].min(q[1]).min(q[2]).min(q[3]) >= MIN_SPLIT_QUALITY
+    }
+
+    fn unit(v: [f64; 3]) -> DVec3 {
+        DVec3::from_array(v).normalize()
+    }
+
+    proptest! {
+        /// Wherever the division-free test gives a verdict, it is the qualities' answer.
+        #[test]
+        fn shape_verdicts_agree_with_the_qualities(
+            corners in prop::array::uniform4(prop::array::uniform3(-1.0f64..1.0)),
+            m in prop::array::uniform3(-1.0f64..1.0),
+            spread in 1e-7f64..1.0,
+        ) {
+            // A small diamond near +Z (edges from ~10 cm to ~6000 km at Earth radius).
+            let [a, b, t, d] = corners.map(|c| unit([c[0] * spread, c[1] * spread, 1.0]));
+            let m = unit([m[0] * spread, m[1] * spread, 1.0]);
+            let pairs = [[t, a], [b, t], [a, d], [d, b]];
+            if let Some(v) = shape_verdict(m, &pairs) {
+                prop_assert_eq!(v, by_quality(m, &pairs));
+            }
+        }
+    }
+
+    /// A square diamond (`a -> b` along x, `t` on +y, `d` on -y), 0.01 rad across, near +Z.
+    fn square_diamond() -> [[DVec3; 2]; 4] {
+        let [a, b, t, d] = [[-0.01, 0.0], [0.01, 0.0], [0.0, 0.01], [0.0, -0.01]].map(|[x, y]| unit([x, y, 1.0]));
+        [[t, a], [b, t], [a, d], [d, b]]
+    }
+
+    /// A triangle whose quality is the bound to within rounding gets no verdict, and the
+    /// qualities decide it.
+    #[test]
+    fn a_quality_at_the_bound_is_left_to_the_division() {
+        let pairs = square_diamond();
+        let [t, a] = pairs[0];
+        // From the centre towards the middle of `t a`: `m, t, a` flattens from 0.87 to 0 while
+        // the other three stay above 0.6.
+        let at = |s: f64| unit([-0.01 * s, 0.01 * s, 1.0]);
+        let quality = |s: f64| face_quality(at(s), t, a);
+        let (mut lo, mut hi) = (0.45, 0.05);
+        assert!(quality(lo) < MIN_SPLIT_QUALITY && quality(hi) > MIN_SPLIT_QUALITY);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if quality(mid) < MIN_SPLIT_QUALITY {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        for s in [lo, hi] {
+            assert_eq!(shape_verdict(at(s), &pairs), None, "quality {}", quality(s));
+        }
+        assert!(!by_quality(at(lo), &pairs) && by_quality(at(hi), &pairs));
+        // Clear cases get their verdict.
+        assert_eq!(shape_verdict(at(0.45), &pairs), Some(false));
+        assert_eq!(shape_verdict(at(0.05), &pairs), Some(true));
+    }
+
+    /// `well_shaped` takes the first candidate the qualities accept: the random point itself,
+    /// pulled halfway or three quarters back, or the edge's centre.
+    #[test]
+    fn well_shaped_points_follow_the_quality_rule() {
+        use crate::mesh::{Edge, EdgeKind, Face, Lod, SplitSite, Vertex};
+        let pairs = square_diamond();
+        let [[t, a], [b, _], [_, d], _] = pairs;
+        let r = 6.371e6;
+        let diamond = Diamond {
+            site: SplitSite { edge: 0, a: 0, b: 1, t: 2, d: 3, f1: 0, f2: 1 },
+            edge: Edge { v: [0, 1], f: [0, 1], lod: Lod::default(), level: 0, kind: EdgeKind::Continent, land: 3 },
+            faces: [Face { e: [0, 1, 2] }, Face { e: [0, 3, 4] }],
+            corners: [a, b, t, d].map(|u| Vertex::new(u * r, 0)),
+            radius: r,
+        };
+        let c = edge_centre(&diamond);
+        let mut outcomes = [0; 4];
+        for k in 0..400 {
+            let p = unit([-0.02 + 0.0001 * k as f64, 0.001 + 0.00001 * k as f64, 1.0]) * r;
+            let xs = [p, c + (p - c) * 0.5, c + (p - c) * 0.25];
+            let first = xs.iter().position(|x| by_quality(x.normalize(), &pairs)).unwrap_or(3);
+            let expected = xs.get(first).copied().unwrap_or(c);
+            assert_eq!(well_shaped(&diamond, p), expected, "k = {k}");
+            outcomes[first] += 1;
+        }
+        assert!(outcomes.iter().all(|&n| n > 0), "{outcomes:?}");
+    }
 }
