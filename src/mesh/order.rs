@@ -100,6 +100,38 @@ fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: 
     out
 }
 
+/// Moves the live items of `items` (`map` gives [`DEAD`] for the others, and for each live one
+/// the number of live ones before it) to the front, each changed by `update`, and drops the
+/// rest: `len` remain. Chunks squeeze their own items to their starts in parallel, then the
+/// squeezed blocks move down into place one after another (each lands below the next one's
+/// start, so none overwrites what is still to move).
+fn squeeze<T: Copy + Send + Sync>(items: &mut Vec<T>, map: &[u32], len: usize, update: impl Fn(&mut T) + Sync) {
+    const CHUNK: usize = 1 << 16;
+    let kept: Vec<usize> = items
+        .par_chunks_mut(CHUNK)
+        .zip(map.par_chunks(CHUNK))
+        .map(|(chunk, map)| {
+            let mut k = 0;
+            for i in 0..chunk.len() {
+                if map[i] != DEAD {
+                    let mut x = chunk[i];
+                    update(&mut x);
+                    chunk[k] = x;
+                    k += 1;
+                }
+            }
+            k
+        })
+        .collect();
+    let mut at = 0;
+    for (c, k) in kept.into_iter().enumerate() {
+        items.copy_within(c * CHUNK..c * CHUNK + k, at);
+        at += k;
+    }
+    assert_eq!(at, len, "the map's live count");
+    items.truncate(len);
+}
+
 /// New ids of the vertices, edges and faces of a mesh: `vertices[old]` is the new id of vertex
 /// `old`, or the dead marker (`u32::MAX - 1`) for a removed one (likewise edges and faces);
 /// each map is a bijection from the kept ids onto `0..n`, with the kept counts `sizes`.
@@ -139,9 +171,19 @@ impl Mesh {
         let (vmap, nv) = kept_order(&self.vertices, |v| v.edge == DEAD);
         let (emap, ne) = kept_order(&self.edges, |e| e.v[0] == DEAD);
         let (fmap, nf) = kept_order(&self.faces, |f| f.e[0] == DEAD);
-        if (nv, ne, nf) != (self.vertices.len(), self.edges.len(), self.faces.len()) {
-            self.renumber(&Renumbering { vertices: vmap, edges: emap, faces: fmap, sizes: (nv, ne, nf) });
+        if (nv, ne, nf) == (self.vertices.len(), self.edges.len(), self.faces.len()) {
+            return;
         }
+        // The order is kept, so every live item moves down (or stays): squeezed in place,
+        // without fresh buffers whose first touches would each fault (that cost more than the
+        // moves themselves when a frame's collapses left holes all over a large mesh).
+        let (vmap, emap, fmap) = (&vmap[..], &emap[..], &fmap[..]);
+        squeeze(&mut self.vertices, vmap, nv, |x| x.edge = renumbered(emap, x.edge));
+        squeeze(&mut self.edges, emap, ne, |x| {
+            x.v = x.v.map(|v| renumbered(vmap, v));
+            x.f = x.f.map(|f| renumbered(fmap, f));
+        });
+        squeeze(&mut self.faces, fmap, nf, |x| x.e = x.e.map(|e| renumbered(emap, e)));
     }
 
     /// Removes dead vertices, edges and faces and renumbers the live ones in spatial order
@@ -208,6 +250,32 @@ mod tests {
         for x in [0u64, 1, 2, 0x15_5555, 0x1f_ffff, 0x12_3456, 0xff_ffff] {
             let slow = (0..21).fold(0u64, |acc, i| acc | ((x >> i) & 1) << (3 * i));
             assert_eq!(spread(x), slow, "{x:#x}");
+        }
+    }
+
+    /// Squeezing in place gives what moving to fresh buffers gives, across chunk boundaries,
+    /// with no holes, only holes, and holes at either end.
+    #[test]
+    fn squeezing_in_place_matches_scattering() {
+        let n = 3 * (1 << 16) + 123;
+        let patterns: [&dyn Fn(usize) -> bool; 5] =
+            [&|_| true, &|_| false, &|i| i % 7 != 3 && !(70_000..140_000).contains(&i), &|i| i >= 1000, &|i| {
+                i < n - 5 && i % 2 == 0
+            }];
+        for live in patterns {
+            let items: Vec<u64> = (0..n as u64).map(|i| i * 3).collect();
+            let mut map = vec![DEAD; n];
+            let mut len = 0;
+            for (i, m) in map.iter_mut().enumerate() {
+                if live(i) {
+                    *m = len;
+                    len += 1;
+                }
+            }
+            let expected = scatter(&items, &map, len as usize, |x| *x += 1);
+            let mut squeezed = items.clone();
+            squeeze(&mut squeezed, &map, len as usize, |x| *x += 1);
+            assert_eq!(squeezed, expected);
         }
     }
 
