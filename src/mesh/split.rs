@@ -143,25 +143,29 @@ impl Mesh {
         // Each thread splits whole chunks in order, so it can ask for the memory of the next
         // splits of its chunk ahead of time (see `Buffers::prefetch_split`).
         const CHUNK: usize = 512;
-        let answers: Vec<[T; 4]> = edges
-            .par_chunks(CHUNK)
-            .enumerate()
-            .flat_map_iter(|(c, chunk)| {
-                let (bufs, judge, make) = (&bufs, &judge, &make);
-                chunk.iter().enumerate().map(move |(k, &e)| {
-                    // SAFETY: see `Buffers::split` and `Buffers::prefetch_split`; the
-                    // reservations above hold the new slots, and no other split writes this
-                    // split's diamond.
-                    let made = unsafe {
-                        bufs.prefetch_split(chunk, k);
-                        let diamond = bufs.diamond(e, radius);
-                        let (vertex, kinds) = make(&diamond);
-                        bufs.split(&diamond, vertex, kinds, c * CHUNK + k)
-                    };
-                    made.map(|(edge, mid)| judge(&edge, mid))
-                })
-            })
-            .collect();
+        // The `k`-th split of chunk `c`.
+        let split = |c: usize, chunk: &[u32], k: usize| {
+            // SAFETY: see `Buffers::split` and `Buffers::prefetch_split`; the reservations
+            // above hold the new slots, and no other split writes this split's diamond.
+            let made = unsafe {
+                bufs.prefetch_split(chunk, k);
+                let diamond = bufs.diamond(chunk[k], radius);
+                let (vertex, kinds) = make(&diamond);
+                bufs.split(&diamond, vertex, kinds, c * CHUNK + k)
+            };
+            made.map(|(edge, mid)| judge(&edge, mid))
+        };
+        let answers: Vec<[T; 4]> = if n <= CHUNK {
+            // One chunk (single splits while building the base mesh, the last passes of an
+            // adaption): no threads to wake.
+            (0..n).map(|k| split(0, edges, k)).collect()
+        } else {
+            edges
+                .par_chunks(CHUNK)
+                .enumerate()
+                .flat_map_iter(|(c, chunk)| (0..chunk.len()).map(move |k| split(c, chunk, k)))
+                .collect()
+        };
         // SAFETY: every slot up to the new lengths was written by exactly one split above.
         unsafe {
             self.vertices.set_len(nv + n);
