@@ -98,6 +98,7 @@ pub fn well_shaped_towards(diamond: &Diamond, corners: &[DVec3; 4], p: DVec3) ->
     let pairs = [[t, a], [b, t], [a, d], [d, b]];
     // The three candidates' directions at once: they do not depend on each other, so their
     // square roots overlap.
+    // (`p` itself at full scale: `c + (p - c)` can differ from `p` in the last bit.)
     let xs = [p, c + (p - c) * 0.5, c + (p - c) * 0.25];
     let ms = xs.map(DVec3::normalize);
     for (x, m) in xs.into_iter().zip(ms) {
@@ -143,12 +144,18 @@ fn shape_verdict(m: DVec3, pairs: &[[DVec3; 2]; 4]) -> Option<bool> {
 #[inline(never)]
 fn well_shaped_by_quality(c: DVec3, xs: &[DVec3; 3], ms: &[DVec3; 3], pairs: &[[DVec3; 2]; 4]) -> (DVec3, DVec3) {
     for (&x, &m) in xs.iter().zip(ms) {
-        let q = pairs.map(|[y, z]| face_quality(m, y, z));
-        if q[0].min(q[1]).min(q[2]).min(q[3]) >= MIN_SPLIT_QUALITY {
+        if qualities_reach_bound(m, pairs) {
             return (x, m);
         }
     }
     (c, c.normalize())
+}
+
+/// The shape rule itself: the smallest [`face_quality`] of the triangles `m, y, z` for the
+/// `pairs` `[y, z]` is at least [`MIN_SPLIT_QUALITY`].
+fn qualities_reach_bound(m: DVec3, pairs: &[[DVec3; 2]; 4]) -> bool {
+    let q = pairs.map(|[y, z]| face_quality(m, y, z));
+    q[0].min(q[1]).min(q[2]).min(q[3]) >= MIN_SPLIT_QUALITY
 }
 
 /// Shape quality of the triangle `x, y, z` (unit vectors, counter-clockwise seen from outside):
@@ -190,12 +197,6 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    /// The shape test as the qualities give it (the definition `shape_verdict` must agree with).
-    fn by_quality(m: DVec3, pairs: &[[DVec3; 2]; 4]) -> bool {
-        let q = pairs.map(|[y, z]| face_quality(m, y, z));
-        q[0].min(q[1]).min(q[2]).min(q[3]) >= MIN_SPLIT_QUALITY
-    }
-
     fn unit(v: [f64; 3]) -> DVec3 {
         DVec3::from_array(v).normalize()
     }
@@ -213,7 +214,7 @@ mod tests {
             let m = unit([m[0] * spread, m[1] * spread, 1.0]);
             let pairs = [[t, a], [b, t], [a, d], [d, b]];
             if let Some(v) = shape_verdict(m, &pairs) {
-                prop_assert_eq!(v, by_quality(m, &pairs));
+                prop_assert_eq!(v, qualities_reach_bound(m, &pairs));
             }
         }
     }
@@ -247,7 +248,7 @@ mod tests {
         for s in [lo, hi] {
             assert_eq!(shape_verdict(at(s), &pairs), None, "quality {}", quality(s));
         }
-        assert!(!by_quality(at(lo), &pairs) && by_quality(at(hi), &pairs));
+        assert!(!qualities_reach_bound(at(lo), &pairs) && qualities_reach_bound(at(hi), &pairs));
         // Clear cases get their verdict.
         assert_eq!(shape_verdict(at(0.45), &pairs), Some(false));
         assert_eq!(shape_verdict(at(0.05), &pairs), Some(true));
@@ -273,7 +274,7 @@ mod tests {
         for k in 0..400 {
             let p = unit([-0.02 + 0.0001 * k as f64, 0.001 + 0.00001 * k as f64, 1.0]) * r;
             let xs = [p, c + (p - c) * 0.5, c + (p - c) * 0.25];
-            let first = xs.iter().position(|x| by_quality(x.normalize(), &pairs)).unwrap_or(3);
+            let first = xs.iter().position(|x| qualities_reach_bound(x.normalize(), &pairs)).unwrap_or(3);
             let expected = xs.get(first).copied().unwrap_or(c);
             assert_eq!(well_shaped(&diamond, p), expected, "k = {k}");
             outcomes[first] += 1;
