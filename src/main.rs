@@ -68,6 +68,8 @@ enum Command {
         planet: PlanetArgs,
         /// Camera query: eye=X,Y,Z&target=X,Y,Z[&up=X,Y,Z][&fov=DEG][&width=PX][&height=PX]
         /// [&land_px=PX][&water_px=PX]; metres, planet-centred (+Z north, longitude 0 on +X).
+        /// Defaults: up the local vertical, fov 60 (vertical), 1920x1080, land_px 8, water_px 40.
+        /// Repeatable: the cameras are visited in order and the last one is written.
         #[arg(long = "camera", required = true, allow_hyphen_values = true)]
         cameras: Vec<String>,
         /// Face budget: coarser targets until the view fits.
@@ -343,9 +345,17 @@ fn run_view(
     let radius = spec.params.radius_m;
     let cams = cameras
         .iter()
-        .map(|q| riverworld::adapt::Camera::parse_query(q, radius).map(|(c, _)| c))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| e.to_string())?;
+        .map(|q| {
+            let (cam, rest) = riverworld::adapt::Camera::parse_query(q, radius).map_err(|e| e.to_string())?;
+            match rest.first() {
+                Some((k, _)) if k == "max_faces" => {
+                    Err("max_faces is not a camera parameter here: use --max-faces".into())
+                }
+                Some((k, _)) => Err(format!("unknown camera parameter {k:?}")),
+                None => Ok(cam),
+            }
+        })
+        .collect::<Result<Vec<_>, String>>()?;
     if max_faces == Some(0) {
         return Err("--max-faces must be at least 1".into());
     }

@@ -222,10 +222,42 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(stats["faces"].as_u64().unwrap() > 2000 && stats["faces"].as_u64().unwrap() <= 100_000, "{stats}");
     assert_eq!(stats["converged"], true);
+    for key in ["vertices", "splits", "passes"] {
+        assert!(stats[key].as_u64().unwrap() > 0, "{key}: {stats}");
+    }
+    assert_eq!(stats["collapses"], 0, "refined from the base mesh: {stats}");
+    assert!(stats["adapt_ms"].as_f64().unwrap() > 0.0, "{stats}");
+    let bpv = stats["bytes_per_vertex"].as_f64().unwrap();
+    assert!((100.0..200.0).contains(&bpv), "{stats}");
     assert!(run_view(&b, "auto").status.success());
     let bytes = std::fs::read(&a).unwrap();
     assert_eq!(&bytes[..4], b"glTF");
     assert!(bytes == std::fs::read(&b).unwrap(), "view.glb differs between runs");
+    // Cameras are visited in order and the last one is output: the mesh is the same whichever
+    // cameras came before it.
+    let via = dir.join("via.glb");
+    let before = "eye=6600000,300000,600000&target=6374000,150000,300000&width=320&height=180&land_px=3";
+    let o = run(&[
+        "view",
+        "--faces",
+        "2000",
+        "--camera",
+        before,
+        "--camera",
+        cam,
+        "--max-faces",
+        "100000",
+        "--out",
+        via.to_str().unwrap(),
+        "--stats",
+        "--backend",
+        "cpu",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let via_stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(via_stats["faces"], stats["faces"]);
+    // (The file lists the vertices and triangles in the order the mesh holds them.)
+    assert_eq!(glb_triangles(&bytes), glb_triangles(&std::fs::read(&via).unwrap()), "the mesh depends on the path");
     // The wgpu compute backend (lavapipe in CI) writes the same bytes.
     let o = run_view(&g, "gpu");
     let log = String::from_utf8_lossy(&o.stderr);
@@ -239,6 +271,8 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
         ("eye=0,0,1e7&target=0,0,1e7", "equals the eye"),
         ("eye=0,0,1e7&target=0,0,0&width=0", "width"),
         ("eye=nan,0,1e7&target=0,0,0", "eye"),
+        ("eye=0,0,1e7&target=0,0,0&fvo=30", "unknown camera parameter \"fvo\""),
+        ("eye=0,0,1e7&target=0,0,0&max_faces=10", "use --max-faces"),
     ] {
         refused(&["view", "--faces", "200", "--camera", bad, "--out", dir.join("x.glb").to_str().unwrap()], needle);
     }
@@ -272,4 +306,50 @@ fn render_writes_identical_images_in_the_asked_format_and_refuses_bad_input() {
         refused(&["render", "--faces", "200", "--camera", bad, "--out", dir.join("x.png").to_str().unwrap()], needle);
     }
     assert!(!dir.join("x.png").exists());
+}
+
+/// Every mesh's triangles in a glb, each as its corners' position bits starting from the least,
+/// sorted: what the file shows whatever order it lists vertices and triangles in.
+fn glb_triangles(glb: &[u8]) -> Vec<Vec<[[u32; 3]; 3]>> {
+    let word = |at: usize| u32::from_le_bytes(glb[at..at + 4].try_into().unwrap()) as usize;
+    let json_len = word(12);
+    let json: serde_json::Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    let bin = &glb[20 + json_len + 8..];
+    let words = |accessor: &serde_json::Value| -> Vec<u32> {
+        let a = &json["accessors"][accessor.as_u64().unwrap() as usize];
+        let view = &json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+        let start = (view["byteOffset"].as_u64().unwrap_or(0) + a["byteOffset"].as_u64().unwrap_or(0)) as usize;
+        let per = match a["type"].as_str().unwrap() {
+            "SCALAR" => 1,
+            "VEC3" => 3,
+            t => panic!("{t}"),
+        };
+        let n = a["count"].as_u64().unwrap() as usize * per;
+        match a["componentType"].as_u64().unwrap() {
+            5123 => (0..n).map(|i| u16::from_le_bytes([bin[start + 2 * i], bin[start + 2 * i + 1]]) as u32).collect(),
+            5125 | 5126 => {
+                (0..n).map(|i| u32::from_le_bytes(bin[start + 4 * i..start + 4 * i + 4].try_into().unwrap())).collect()
+            }
+            t => panic!("component type {t}"),
+        }
+    };
+    let meshes = json["meshes"].as_array().unwrap();
+    meshes
+        .iter()
+        .map(|m| {
+            let p = &m["primitives"][0];
+            let pos = words(&p["attributes"]["POSITION"]);
+            let corner = |i: u32| -> [u32; 3] { pos[3 * i as usize..3 * i as usize + 3].try_into().unwrap() };
+            let mut tris: Vec<[[u32; 3]; 3]> = words(&p["indices"])
+                .chunks(3)
+                .map(|t| {
+                    let c = [corner(t[0]), corner(t[1]), corner(t[2])];
+                    let first = (0..3).min_by_key(|&k| c[k]).unwrap();
+                    [c[first], c[(first + 1) % 3], c[(first + 2) % 3]]
+                })
+                .collect();
+            tris.sort_unstable();
+            tris
+        })
+        .collect()
 }

@@ -123,6 +123,12 @@ impl Camera {
         water_px: f64,
         radius: f64,
     ) -> Result<Camera, CameraError> {
+        // (The scalars' range checks below also refuse NaN.)
+        for (name, v) in [("eye", Some(eye)), ("target", Some(target)), ("up", up)] {
+            if let Some(v) = v.filter(|v| !v.is_finite()) {
+                return Err(err(name, format!("is not finite ({v})")));
+            }
+        }
         if eye.length() < radius {
             return Err(err(
                 "eye",
@@ -360,6 +366,24 @@ mod tests {
     }
 
     #[test]
+    fn built_cameras_refuse_what_a_query_cannot_spell() {
+        let (eye, target, nan) = (DVec3::new(0.0, 0.0, 2e7), DVec3::ZERO, f64::NAN);
+        let new = |eye, target, up, fov, land_px| Camera::new(eye, target, up, fov, 1920, 1080, land_px, 40.0, R);
+        let bad = [
+            (new(DVec3::new(nan, 0.0, 2e7), target, None, 60.0, 8.0), "eye"),
+            (new(DVec3::new(0.0, 0.0, f64::INFINITY), target, None, 60.0, 8.0), "eye"),
+            (new(eye, DVec3::new(0.0, nan, 0.0), None, 60.0, 8.0), "target"),
+            (new(eye, target, Some(DVec3::new(1.0, nan, 0.0)), 60.0, 8.0), "up"),
+            (new(eye, target, None, nan, 8.0), "fov"),
+            (new(eye, target, None, 60.0, nan), "land_px"),
+        ];
+        for (made, field) in bad {
+            assert_eq!(made.unwrap_err().field, field);
+        }
+        assert!(new(eye, target, None, 60.0, 8.0).is_ok());
+    }
+
+    #[test]
     fn criterion_is_hereditary_for_nested_balls() {
         let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40", R).unwrap().0;
         let view = View::new(&cam, R, 0.01);
@@ -395,6 +419,31 @@ mod tests {
             assert!(view.planes.iter().all(|n| n.dot(inside) > 0.0));
             assert!(view.planes.iter().any(|n| n.dot(outside) < 0.0));
         }
+    }
+
+    /// Eq. 6 with c_LOD = 20: outside the frustum an edge needs to be `1 + 20 q²` times longer
+    /// to split, `q` how far outside it is (here the sine of its angle beyond the frustum's top
+    /// over the tangent of the half field of view); inside, the plain `l/d > c`.
+    #[test]
+    fn outside_the_frustum_distance_grows_by_eq_6() {
+        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=60", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01);
+        let (f, _, u) = cam.basis();
+        let dist = 1.0e7;
+        let mut last = 0.0;
+        for deg in [0.0f64, 20.0, 29.9, 31.0, 40.0, 60.0, 80.0] {
+            let t = deg.to_radians();
+            let centre = cam.eye + (f * t.cos() + u * t.sin()) * dist;
+            let beyond = (t - 30f64.to_radians()).max(0.0);
+            let q = beyond.sin() / 30f64.to_radians().tan();
+            let threshold = view.c_land * dist * (1.0 + 20.0 * q * q);
+            assert!(view.wants_split(threshold * 1.000_001, centre, 0.0, false), "{deg}°");
+            assert!(!view.wants_split(threshold * 0.999_999, centre, 0.0, false), "{deg}°");
+            assert!(threshold >= last, "{deg}°");
+            last = threshold;
+        }
+        // 80° off the axis is 50° beyond the top (q = 1.327): edges must be 36.2 times longer.
+        assert!((last / (view.c_land * dist) - 36.2).abs() < 0.05, "{}", last / (view.c_land * dist));
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! Memory management and buffer compaction (paper §5.2, §5.5): dead entities are squeezed out,
 //! and buffer capacity follows the face count with `n_alloc` slack — grown to `n + n_alloc`
-//! when short, shrunk back when above `n + 2 n_alloc`.
+//! when a pass's splits need more than there is (`n` what they need), shrunk back when above
+//! `n + 2 n_alloc` after a compaction.
 //!
 //! Compaction can also put the buffers in spatial order (`Mesh::compact_in_spatial_order`): a
 //! pass over an ordered mesh reads its neighbours from nearby memory, ~3 times faster than over
@@ -28,6 +29,20 @@ pub fn order(mesh: &mut Mesh) -> Renumbering {
     let order = mesh.compact_in_spatial_order();
     fit_all(mesh);
     order
+}
+
+/// Makes room for `splits` more splits: a buffer too small for them grows to what they need
+/// plus the slack (the paper's reallocation to `n_f + n_alloc`), not to twice its size.
+pub fn make_room(mesh: &mut Mesh, splits: usize) {
+    grow(&mut mesh.faces, 2 * splits, N_ALLOC);
+    grow(&mut mesh.edges, 3 * splits, N_ALLOC * 3 / 2);
+    grow(&mut mesh.vertices, splits, N_ALLOC / 2);
+}
+
+fn grow<T>(buf: &mut Vec<T>, added: usize, slack: usize) {
+    if buf.capacity() < buf.len() + added {
+        buf.reserve_exact(added + slack);
+    }
 }
 
 fn fit_all(mesh: &mut Mesh) {

@@ -158,6 +158,7 @@ fn merge_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
 /// edges a split makes or changes, while their end points are in cache). Returns the answers
 /// for `[e1, e2, e3, e4]`, split by split; the split edges' slots now hold their first halves.
 pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params, view: &View) -> Vec<[bool; 4]> {
+    super::compact::make_room(mesh, ready.len());
     mesh.split_edges_judged(ready, |d| split_vertex(d, params), |edge, mid| wants_edge(view, edge, mid))
 }
 

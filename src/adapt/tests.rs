@@ -88,6 +88,9 @@ fn same_mesh_whatever_the_path() {
     assert!(sab.collapses > 0, "the path through A must coarsen something: {sab:?}");
     assert_eq!(direct.faces.len(), via_a.faces.len());
     assert!(canonical(&direct) == canonical(&via_a), "meshes differ");
+    // The terrain invariants hold after coarsening too (checked directly, not only through
+    // the equality).
+    check_terrain(&via_a, &Params::default());
     // Spatial order is a function of the mesh alone: both paths compact to equal buffers.
     let (mut direct, mut via_a) = (direct, via_a);
     direct.compact_in_spatial_order();
@@ -102,16 +105,24 @@ fn a_vertex_is_the_same_at_every_level_of_detail() {
     let far = camera(-5.0, 30.0, 2_000_000.0, 2_000_000.0, 3.0);
     let (m1, _) = adapted(&[near]);
     let (m2, _) = adapted(&[far]);
-    let alt: std::collections::HashMap<[u64; 3], (u32, u32)> =
-        m1.vertices.iter().map(|v| (v.pos.map(f64::to_bits), (v.ground.to_bits(), v.water.to_bits()))).collect();
+    // A vertex of the coarse mesh is the same vertex as a fine one within a metre of it (no two
+    // vertices of these meshes are that close); matched so, a vertex whose position drifted
+    // between the levels of detail would be found, and fail.
+    let mut fine: Vec<&crate::mesh::Vertex> = m1.vertices.iter().collect();
+    fine.sort_by(|a, b| a.pos[0].total_cmp(&b.pos[0]));
+    let bits = |v: &crate::mesh::Vertex| (v.pos.map(f64::to_bits), v.ground.to_bits(), v.water.to_bits());
     let mut shared = 0;
     for v in &m2.vertices {
-        if let Some(&(g, w)) = alt.get(&v.pos.map(f64::to_bits)) {
-            assert_eq!((g, w), (v.ground.to_bits(), v.water.to_bits()));
+        let from = fine.partition_point(|w| w.pos[0] < v.pos[0] - 1.0);
+        let mut close =
+            fine[from..].iter().take_while(|w| w.pos[0] <= v.pos[0] + 1.0).filter(|w| w.p().distance(v.p()) < 1.0);
+        if let Some(w) = close.next() {
+            assert!(close.next().is_none(), "two fine vertices within a metre of {:?}", v.pos);
+            assert_eq!(bits(w), bits(v), "a vertex differs between levels of detail");
             shared += 1;
         }
     }
-    assert!(shared > base().mesh.vertices.len(), "only {shared} shared vertices");
+    assert!(shared > base().mesh.vertices.len() + 1000, "only {shared} shared vertices");
 }
 
 /// Rivers descend to a mouth, are never interrupted by mountains, riverbeds lie below their
@@ -252,6 +263,57 @@ fn coarsening_back_to_orbit_matches_a_direct_orbit_view() {
     assert!(canonical(&direct) == canonical(&back));
     let (ground, _) = adapted(&[camera(0.0, 0.0, 10_000.0, 30_000.0, 4.0)]);
     assert!(direct.faces.len() < ground.faces.len(), "{} vs {}", direct.faces.len(), ground.faces.len());
+}
+
+#[test]
+fn buffers_grow_and_shrink_with_the_papers_slack() {
+    use crate::adapt::compact::N_ALLOC;
+    let within = |m: &Mesh, what: &str| {
+        for (name, len, cap, slack) in [
+            ("faces", m.faces.len(), m.faces.capacity(), N_ALLOC),
+            ("edges", m.edges.len(), m.edges.capacity(), N_ALLOC * 3 / 2),
+            ("vertices", m.vertices.len(), m.vertices.capacity(), N_ALLOC / 2),
+        ] {
+            assert!(len <= cap && cap <= len + 2 * slack, "{what}: {name} {len} in a capacity of {cap}");
+        }
+    };
+    // Large enough that doubling a buffer overshoots the slack many times over.
+    let cam = camera(10.0, 20.0, 300_000.0, 600_000.0, 0.5);
+    let mut a = Adapter::new(base().mesh.clone(), Params::default());
+    a.adapt(&cam, None);
+    assert!(a.mesh().faces.len() > 8 * N_ALLOC, "{} faces", a.mesh().faces.len());
+    within(a.mesh(), "refined");
+    let s = a.adapt(&camera(10.0, 20.0, 3_000_000.0, 3_000_000.0, 4.0), None);
+    assert!(s.collapses > 2 * N_ALLOC, "{s:?}");
+    within(a.mesh(), "coarsened");
+}
+
+#[test]
+fn adaption_reaches_the_minimum_edge_length_at_earth_radius() {
+    // A 0.2° view from 20 m above a land vertex wants edges far below the 1 cm minimum
+    // (Table 2) inside its frustum, a spot some 10 cm across.
+    let params = Params::default();
+    let m = &base().mesh;
+    let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
+    let (up, ground) = (v.p().normalize(), v.p().normalize() * (R + v.ground as f64));
+    let across = up.cross(DVec3::Z).normalize();
+    let cam = Camera::new(ground + up * 20.0, ground + across * 2.0, None, 0.2, 320, 180, 1.0, 5.0, R).unwrap();
+    let mut a = Adapter::new(m.clone(), params.clone());
+    let s = a.adapt(&cam, None);
+    assert!(s.converged, "{s:?}");
+    let m = a.mesh();
+    m.validate().unwrap();
+    // Edges of 2 cm or more are split no further; their halves, and the edges to the apexes
+    // of the split diamonds, are ~1 cm, some shorter where the new vertex sits off-centre.
+    let min = params.min_edge_length_m;
+    let lengths: Vec<f64> = (0..m.edges.len() as u32).map(|e| m.edge_length(e)).collect();
+    let fine = lengths.iter().filter(|&&l| l < 2.0 * min).count();
+    let shortest = lengths.iter().copied().fold(f64::MAX, f64::min);
+    assert!(fine > 20 && shortest > 0.1 * min, "{fine} edges under 2 cm, the shortest {shortest} m");
+    let mut keys: Vec<[u64; 3]> = m.vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
+    keys.sort_unstable();
+    keys.dedup();
+    assert_eq!(keys.len(), m.vertices.len());
 }
 
 mod paths {

@@ -334,4 +334,4 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
 
 #[cfg(test)]
 #[path = "glb_tests.rs"]
-mod tests;
+pub(crate) mod tests;

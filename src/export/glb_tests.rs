@@ -2,10 +2,10 @@ use super::*;
 use crate::export::test_planet;
 use gltf_json::validation::Validate;
 
-struct Parsed {
-    root: json::Root,
-    value: serde_json::Value,
-    bin: Vec<u8>,
+pub(crate) struct Parsed {
+    pub root: json::Root,
+    pub value: serde_json::Value,
+    pub bin: Vec<u8>,
 }
 
 fn u32_at(b: &[u8], at: usize) -> u32 {
@@ -13,7 +13,7 @@ fn u32_at(b: &[u8], at: usize) -> u32 {
 }
 
 /// Checks the container (header, chunk types, lengths, alignment) and parses the JSON chunk.
-fn parse(glb: &[u8]) -> Parsed {
+pub(crate) fn parse(glb: &[u8]) -> Parsed {
     assert_eq!(&glb[0..4], b"glTF");
     assert_eq!(u32_at(glb, 4), 2);
     assert_eq!(u32_at(glb, 8) as usize, glb.len());

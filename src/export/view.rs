@@ -115,8 +115,17 @@ mod tests {
         }
         assert!(near > 100, "{near}");
         let glb = view_glb(a.mesh(), &p, origin);
-        assert_eq!(&glb[..4], b"glTF");
         assert_eq!(view_glb(a.mesh(), &p, origin), glb);
+        // A valid glTF: the terrain with normals and the water surface, both at the origin.
+        let parsed = crate::export::glb::tests::parse(&glb);
+        assert_eq!(parsed.root.nodes.len(), 2);
+        for node in &parsed.value["nodes"].as_array().unwrap()[..] {
+            let t = node["translation"].as_array().unwrap();
+            // (serde_json reads the last digit of an f64 approximately.)
+            assert!((0..3).all(|k| (t[k].as_f64().unwrap() - o[k]).abs() < 1e-6), "{t:?} vs {o:?}");
+        }
+        let normals = gltf_json::validation::Checked::Valid(gltf_json::mesh::Semantic::Normals);
+        assert!(parsed.root.meshes[0].primitives[0].attributes.contains_key(&normals));
         let water = water_mesh(a.mesh(), origin, &a.mesh().triangles());
         assert!(!water.indices.is_empty());
         assert!(water.indices.iter().all(|&i| (i as usize) < water.positions.len()));
