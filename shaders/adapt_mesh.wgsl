@@ -8,8 +8,8 @@
 
 struct Vertex {
     pos: array<f64, 3>,
-    ground: f32,
-    water: f32,
+    ground: f64,
+    water: f64,
     edge: u32,
     // `Lod`: length (bfloat16, low half), radius (bfloat16, high half)
     parent_lod: u32,

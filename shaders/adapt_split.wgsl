@@ -61,7 +61,7 @@ const SALT_ETA: u32 = 2u;
 const SALT_ALTITUDE: u32 = 3u;
 const SALT_RIVER: u32 = 4u;
 const F64_MIN_POSITIVE: f64 = 2.2250738585072014e-308lf;
-const F32_MIN: f32 = -3.40282347e38f;
+const F64_MIN: f64 = -1.7976931348623157e308lf;
 
 struct Site {
     edge: u32,
@@ -269,7 +269,7 @@ fn split_position(s: Site, seed: u32, kind: u32) -> vec3<f64> {
 
 fn new_vertex(at: vec3<f64>, seed: u32, ground: f64, water: f64, flags: u32, tangent: u32) -> Vertex {
     let q = lift(at, ground);
-    return Vertex(array<f64, 3>(q.x, q.y, q.z), f32(ground), f32(water), NONE, 0u, seed, tangent | (flags << 24u));
+    return Vertex(array<f64, 3>(q.x, q.y, q.z), ground, water, NONE, 0u, seed, tangent | (flags << 24u));
 }
 
 // `wet_vertex`: sea floor, shore, or river interpolated.
@@ -278,7 +278,7 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     let vb = vertices[s.b];
     let xi = unit(seed, SALT_ALTITUDE);
     let sea = p.sea_level;
-    let mid_ground = (f64(va.ground) + f64(vb.ground)) * p.half;
+    let mid_ground = (va.ground + vb.ground) * p.half;
     let len = distance3(pos(s.a), pos(s.b));
     if kind == KIND_SEA {
         let g = min(mid_ground + (xi - p.half) * len * p.sea_roughness, sea - p.one);
@@ -289,7 +289,7 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         let g = clamp(mid_ground + (xi - p.half) * rough, sea - p.max_river_depth, sea + p.riverbed_edge_height);
         return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
     }
-    let w = (f64(va.water) + f64(vb.water)) * p.half;
+    let w = (va.water + vb.water) * p.half;
     var up = va;
     var down = vb;
     if !(va.water >= vb.water) {
@@ -306,7 +306,7 @@ fn is_wet(v: Vertex) -> bool {
 
 // Eq. 11.
 fn riverbank_floor(v: Vertex, le: f64) -> f64 {
-    return min(f64(v.ground) + le * p.riverbed_slope, f64(v.water) + p.riverbed_edge_height + le * p.near_river_slope);
+    return min(v.ground + le * p.riverbed_slope, v.water + p.riverbed_edge_height + le * p.near_river_slope);
 }
 
 // `least_steep`: the altitude whose steepest slope to the neighbours is least.
@@ -338,7 +338,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     for (var i = 0u; i < 4u; i++) {
         around[i] = vertices[ends[i]];
         lens[i] = distance3(at_unit, normalize3(triple(around[i].pos))) * p.radius;
-        grounds[i] = f64(around[i].ground);
+        grounds[i] = around[i].ground;
     }
     let xi = unit(seed, SALT_ALTITUDE);
     var bank_lo = p.sea_level + p.one;
@@ -348,14 +348,14 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     for (var i = 0u; i < 4u; i++) {
         let v = around[i];
         let le = lens[i];
-        let below = f64(v.ground) - le * p.ground_slope;
+        let below = v.ground - le * p.ground_slope;
         if is_wet(v) {
             bank_lo = max(bank_lo, riverbank_floor(v, le));
         } else {
             slope_lo = max(slope_lo, below);
         }
         any_lo = max(any_lo, below);
-        hi = min(hi, f64(v.ground) + le * p.ground_slope);
+        hi = min(hi, v.ground + le * p.ground_slope);
     }
     let edge_len = distance3(pos(s.a), pos(s.b));
 
@@ -365,14 +365,14 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
             let v = around[i];
             if !is_wet(v) {
                 let le = lens[i];
-                cap = min(cap, f64(v.ground) - min(le * p.riverbed_slope, p.riverbed_edge_height + le * p.near_river_slope));
+                cap = min(cap, v.ground - min(le * p.riverbed_slope, p.riverbed_edge_height + le * p.near_river_slope));
             }
         }
         var best = 4u;
         var best_floor = f64(0.0);
         for (var i = 0u; i < 4u; i++) {
             if (vertex_flags(around[i]) & FLAG_RIVER) != 0u && lens[i] >= p.min_river_length {
-                let lowest = f64(around[i].water) + lens[i] * p.river_slope;
+                let lowest = around[i].water + lens[i] * p.river_slope;
                 if lowest < cap && lowest < p.max_river_altitude && (best == 4u || lowest < best_floor) {
                     best = i;
                     best_floor = lowest;
@@ -400,15 +400,15 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     } else {
         g = hi;
     }
-    var surface = F32_MIN;
+    var surface = F64_MIN;
     for (var i = 0u; i < 4u; i++) {
         if is_wet(around[i]) {
             surface = max(surface, around[i].water);
         }
     }
     var water = g;
-    if f32(g) < surface {
-        water = f64(surface);
+    if g < surface {
+        water = surface;
     }
     return Made(new_vertex(at, seed, g, water, FLAG_REFINED, 0u), kinds);
 }

@@ -14,9 +14,9 @@ use std::time::Instant;
 pub fn local_top(mesh: &crate::mesh::Mesh, lat: f64, lon: f64, reach: f64) -> f64 {
     let p = direction(lat, lon) * mesh.radius;
     let near = mesh.vertices.iter().filter(|v| v.p().normalize().distance(p.normalize()) * mesh.radius < reach);
-    let top = near.map(|v| v.ground.max(v.water) as f64).fold(f64::MIN, f64::max);
+    let top = near.map(|v| v.ground.max(v.water)).fold(f64::MIN, f64::max);
     if top == f64::MIN {
-        mesh.vertices.iter().map(|v| v.ground.max(v.water) as f64).fold(0.0, f64::max)
+        mesh.vertices.iter().map(|v| v.ground.max(v.water)).fold(0.0, f64::max)
     } else {
         top
     }

@@ -51,7 +51,7 @@ impl RiverGraph {
                 mouths.push(v);
                 continue;
             }
-            let mut best: Option<(f32, u32)> = None;
+            let mut best: Option<(f64, u32)> = None;
             for (w, e) in adj.around(v) {
                 if mesh.edges[e as usize].kind != EdgeKind::River {
                     continue;

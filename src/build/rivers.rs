@@ -162,14 +162,14 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     let mut gradient = vec![0.0f64; n]; // e_a per river vertex, reused by eq. 5
     for c in (0..n).filter(|&c| coast[c]) {
         let vert = &mut mesh.vertices[c];
-        vert.water = sea as f32;
+        vert.water = sea;
         if tributaries[c] > 0 {
-            vert.ground = mouth_ground as f32;
+            vert.ground = mouth_ground;
             vert.flags.insert(VertexFlags::MOUTH | VertexFlags::RIVER);
             report.mouths += 1;
             gradient[c] = (p.max_river_altitude_m - mouth_ground) / (l_up[c]).max(p.min_river_length_m);
         } else {
-            vert.ground = (sea + p.riverbed_edge_height_m * altitude_random(vert.seed)) as f32;
+            vert.ground = sea + p.riverbed_edge_height_m * altitude_random(vert.seed);
         }
     }
     for &v in &order {
@@ -177,7 +177,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         let le = len(down_edge[vi]);
         let river_length = (l_down[vi] + l_up[vi]).max(1.0);
         let depth = p.max_river_depth_m * l_up[vi] / river_length;
-        let (au, wu) = (mesh.vertices[u].ground as f64, mesh.vertices[u].water as f64);
+        let (au, wu) = (mesh.vertices[u].ground, mesh.vertices[u].water);
         // s_r, unless the river is so long that s_r alone would lift its spring above
         // a_max_river: then the slope shrinks to fit (documented deviation).
         let river_slope = p.river_slope().min(0.5 * (p.max_river_altitude_m - mouth_ground) / river_length);
@@ -196,8 +196,8 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
             }
         };
         let vert = &mut mesh.vertices[vi];
-        vert.water = water as f32;
-        vert.ground = (water - depth) as f32;
+        vert.water = water;
+        vert.ground = water - depth;
         vert.flags.insert(VertexFlags::RIVER);
         let ek = &mut mesh.edges[down_edge[vi] as usize];
         ek.kind = EdgeKind::River;
@@ -272,8 +272,8 @@ fn sea_floor(mesh: &mut Mesh, adj: &crate::mesh::Adjacency, p: &Params, elevatio
             Some(h) if h < 0.0 => (sea + h).min(sea - 1.0),
             _ => procedural.min(sea - 1.0),
         };
-        vert.ground = ground as f32;
-        vert.water = sea as f32;
+        vert.ground = ground;
+        vert.water = sea;
     }
 }
 
@@ -332,7 +332,7 @@ fn base_split_vertex(
     let (pos, ground, water, grad, flags) = match edge.kind {
         EdgeKind::Sea => {
             let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
-            let mid = (va.ground + vb.ground) as f64 * 0.5;
+            let mid = (va.ground + vb.ground) * 0.5;
             let g = (mid + (xi - 0.5) * m.edge_length(site.edge) * SHELF_SLOPE * 0.5).min(sea - 1.0);
             (pos, g, sea, 0.0, VertexFlags::empty())
         }
@@ -342,8 +342,8 @@ fn base_split_vertex(
         }
         EdgeKind::River => {
             let pos = split_position(&diamond, seed, edge.kind, p.min_river_length_m);
-            let g = (va.ground + vb.ground) as f64 * 0.5;
-            let w = (va.water + vb.water) as f64 * 0.5;
+            let g = (va.ground + vb.ground) * 0.5;
+            let w = (va.water + vb.water) * 0.5;
             let grad = (gradient[site.a as usize] + gradient[site.b as usize]) * 0.5;
             (pos, g, w, grad, VertexFlags::RIVER)
         }
@@ -368,23 +368,23 @@ fn base_split_vertex(
                     lo = lo.max(riverbank_floor(v, le, p));
                 } else {
                     // Eq. 12: no steeper than the maximum ground slope towards other land.
-                    lo = lo.max(v.ground as f64 - le * p.ground_slope());
-                    hi = hi.min(v.ground as f64 + le * p.ground_slope());
+                    lo = lo.max(v.ground - le * p.ground_slope());
+                    hi = hi.min(v.ground + le * p.ground_slope());
                 }
             }
             let (lat, lon) = lat_lon(pos);
             let mapped = relief.and_then(|map| map.sample(lat, lon)).map(|h| sea + h as f64);
             let wanted = match mapped {
                 Some(h) => h,
-                None => vr.ground as f64 + gradient[r as usize] * horizontal(vr) * xi,
+                None => vr.ground + gradient[r as usize] * horizontal(vr) * xi,
             };
             let g = wanted.min(hi).max(lo);
             (pos, g, g, 0.0, VertexFlags::MOUNTAIN)
         }
     };
     let mut v = Vertex::new(lift(pos, m.radius, 0.0), seed);
-    v.ground = ground as f32;
-    v.water = water as f32;
+    v.ground = ground;
+    v.water = water;
     v.flags = flags;
     gradient.push(grad);
     (v, kinds)
@@ -395,7 +395,7 @@ fn base_split_vertex(
 pub fn finish(mesh: &mut Mesh) {
     let r = mesh.radius;
     for v in mesh.vertices.iter_mut() {
-        v.pos = lift(v.p(), r, v.ground as f64).to_array();
+        v.pos = lift(v.p(), r, v.ground).to_array();
     }
     mesh.reset_lod_roots();
     let graph = super::network::RiverGraph::from_mesh(mesh);

@@ -107,14 +107,14 @@ fn altitudes_respect_the_parameters() {
     let par = Params::default();
     for v in &p.mesh.vertices {
         if v.flags.contains(VertexFlags::MOUTH) {
-            assert_eq!(v.ground as f64, par.mouth_ground());
-            assert_eq!(v.water as f64, par.sea_level_m);
+            assert_eq!(v.ground, par.mouth_ground());
+            assert_eq!(v.water, par.sea_level_m);
         } else if v.flags.is_pure_sea() {
-            assert!((v.ground as f64) < par.sea_level_m && v.water as f64 == par.sea_level_m);
+            assert!(v.ground < par.sea_level_m && v.water == par.sea_level_m);
         }
         if v.flags.contains(VertexFlags::RIVER) {
             assert!(v.water >= v.ground);
         }
-        assert!((v.ground as f64) <= par.max_mountain_altitude_m + 1.0, "{v:?}");
+        assert!(v.ground <= par.max_mountain_altitude_m + 1.0, "{v:?}");
     }
 }

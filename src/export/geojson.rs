@@ -73,7 +73,7 @@ fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64) -> Value {
         .iter()
         .map(|&v| {
             let (lat, lon) = lat_lon(mesh.pos(v));
-            [lon, lat, mesh.vertices[v as usize].water as f64 - sea_level]
+            [lon, lat, mesh.vertices[v as usize].water - sea_level]
         })
         .collect();
     let parts = split_antimeridian(&points);
@@ -164,7 +164,7 @@ mod tests {
             }
             // Starts at the reach's first vertex, in sea-level altitude.
             let v0 = &planet.mesh.vertices[r.vertices[0] as usize];
-            assert!((flat[0][2] - (v0.water as f64 - params.sea_level_m)).abs() <= 0.006);
+            assert!((flat[0][2] - (v0.water - params.sea_level_m)).abs() <= 0.006);
             let (lat, lon) = lat_lon(v0.p());
             assert!((flat[0][1] - lat).abs() < 1e-6 && (flat[0][0] - lon).abs() < 1e-6);
         }

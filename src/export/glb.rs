@@ -98,9 +98,9 @@ pub fn terrain_mesh_with_normals(
                 let [r, g, b] = if v.flags.contains(VertexFlags::RIVER) {
                     RIVER_RGB
                 } else if !v.flags.intersects(land) {
-                    water_colour(sea - v.ground as f64)
+                    water_colour(sea - v.ground)
                 } else {
-                    climate_colour(params.climate, lat_lon(v.p()).0, v.ground as f64 - sea)
+                    climate_colour(params.climate, lat_lon(v.p()).0, v.ground - sea)
                 };
                 [r, g, b, 255]
             })

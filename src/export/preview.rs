@@ -113,7 +113,7 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
             let mut normal = DVec3::ZERO;
             for (&v, &wt) in mesh.corners(raster.faces[i]).iter().zip(&wts) {
                 let (v, wt) = (v as usize, wt as f64);
-                alt += wt * (mesh.vertices[v].ground as f64 - sea);
+                alt += wt * (mesh.vertices[v].ground - sea);
                 normal += wt * normals[v];
             }
             let rgb = if kind == FaceKind::Sea {

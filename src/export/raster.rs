@@ -249,7 +249,7 @@ pub fn elevation_tiff(mesh: &Mesh, params: &Params, width: u32, height: u32) -> 
     use tiff::tags::Tag;
     let raster = SphereRaster::new(mesh, width, height);
     let sea = params.sea_level_m;
-    let data = raster.interpolate(mesh, |v| mesh.vertices[v].ground as f64 - sea);
+    let data = raster.interpolate(mesh, |v| mesh.vertices[v].ground - sea);
     let mut cursor = std::io::Cursor::new(Vec::new());
     let write = |cursor: &mut std::io::Cursor<Vec<u8>>| -> tiff::TiffResult<()> {
         let mut enc = TiffEncoder::new(cursor)?;

@@ -155,7 +155,7 @@ fn elevation_tiff_is_georeferenced_and_matches_the_mesh() {
         other => panic!("not float32: {other:?}"),
     };
     assert_eq!(data.len(), (w * h) as usize);
-    let alt = |v: usize| mesh.vertices[v].ground as f64 - params.sea_level_m;
+    let alt = |v: usize| mesh.vertices[v].ground - params.sea_level_m;
 
     // Pixel (360, 180) of a 721 x 361 grid is centred exactly on (0°N, 0°E), a base vertex.
     let on_x = |v: &usize| {

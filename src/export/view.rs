@@ -54,7 +54,7 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh
             .par_iter()
             .map(at)
             .map(|vert| {
-                let level = vert.water.max(vert.ground) as f64;
+                let level = vert.water.max(vert.ground);
                 let p = lift(vert.p(), mesh.radius, level) - origin;
                 to_gltf_axes(p.to_array()).map(|x| x as f32)
             })
@@ -75,7 +75,7 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh
             .par_iter()
             .map(at)
             .map(|vert| {
-                let [r, g, b] = water_colour((vert.water - vert.ground).max(0.0) as f64);
+                let [r, g, b] = water_colour((vert.water - vert.ground).max(0.0));
                 [r, g, b, WATER_ALPHA]
             })
             .collect(),

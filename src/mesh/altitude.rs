@@ -34,8 +34,7 @@ pub fn land_roughness(edge_len: f64) -> f64 {
 /// have — up the riverbed at `s_rb`, or `epsilon_rb` above the water plus `s_p`, whichever is
 /// lower.
 pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
-    (v.ground as f64 + le * p.riverbed_slope())
-        .min(v.water as f64 + p.riverbed_edge_height_m + le * p.near_river_slope())
+    (v.ground + le * p.riverbed_slope()).min(v.water + p.riverbed_edge_height_m + le * p.near_river_slope())
 }
 
 /// The altitude that minimises the steepest slope towards neighbours at `(ground, horizontal
@@ -76,7 +75,7 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
     let (va, vb) = (d.a(), d.b());
     let xi = altitude_random(seed);
     let sea = p.sea_level_m;
-    let mid_ground = (va.ground as f64 + vb.ground as f64) * 0.5;
+    let mid_ground = (va.ground + vb.ground) * 0.5;
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
             let g = (mid_ground + (xi - 0.5) * d.edge_length() * SEA_ROUGHNESS).min(sea - 1.0);
@@ -91,13 +90,13 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
             (g, sea, VertexFlags::empty())
         }
         _ => {
-            let w = (va.water as f64 + vb.water as f64) * 0.5;
+            let w = (va.water + vb.water) * 0.5;
             (mid_ground.min(w), w, VertexFlags::RIVER)
         }
     };
     let mut v = Vertex::new(lift(pos, d.radius, ground), seed);
-    v.ground = ground as f32;
-    v.water = water as f32;
+    v.ground = ground;
+    v.water = water;
     v.flags = flags | VertexFlags::REFINED;
     if edge.kind == EdgeKind::River {
         let (up, down) = if va.water >= vb.water { (va, vb) } else { (vb, va) };
@@ -132,14 +131,14 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     let mut any_lo = f64::MIN;
     let mut hi = f64::MAX;
     for (v, le) in around.iter().zip(lens) {
-        let below = v.ground as f64 - le * p.ground_slope();
+        let below = v.ground - le * p.ground_slope();
         if is_wet(v) {
             bank_lo = bank_lo.max(riverbank_floor(v, le, p));
         } else {
             slope_lo = slope_lo.max(below);
         }
         any_lo = any_lo.max(below);
-        hi = hi.min(v.ground as f64 + le * p.ground_slope());
+        hi = hi.min(v.ground + le * p.ground_slope());
     }
     let edge_len = d.edge_length();
 
@@ -150,14 +149,13 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
         for (v, le) in around.iter().zip(lens) {
             if !is_wet(v) {
                 cap = cap.min(
-                    v.ground as f64
-                        - (le * p.riverbed_slope()).min(p.riverbed_edge_height_m + le * p.near_river_slope()),
+                    v.ground - (le * p.riverbed_slope()).min(p.riverbed_edge_height_m + le * p.near_river_slope()),
                 );
             }
         }
         let best = (0..4)
             .filter(|&i| around[i].flags.contains(VertexFlags::RIVER) && lens[i] >= p.min_river_length_m)
-            .map(|i| (i, around[i].water as f64 + lens[i] * p.river_slope()))
+            .map(|i| (i, around[i].water + lens[i] * p.river_slope()))
             .filter(|&(_, floor)| floor < cap && floor < p.max_river_altitude_m)
             .min_by(|x, y| x.1.total_cmp(&y.1).then(x.0.cmp(&y.0)));
         if let Some((i, floor)) = best {
@@ -165,22 +163,22 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
             let g = floor + (top - floor) * unit(seed, salt::RIVER) * 0.5;
             kinds[i] = EdgeKind::River;
             let mut v = Vertex::new(lifted(g), seed);
-            v.ground = g as f32;
-            v.water = g as f32;
+            v.ground = g;
+            v.water = g;
             v.flags = VertexFlags::RIVER | VertexFlags::REFINED;
             v.tangent = Tangent::new(tangent_towards(v.p(), around[i].p()));
             return (v, kinds);
         }
     }
 
-    let mean = around.iter().map(|v| v.ground as f64).sum::<f64>() * 0.25;
+    let mean = around.iter().map(|v| v.ground).sum::<f64>() * 0.25;
     let wanted = mean + (xi - 0.5) * land_roughness(edge_len);
     let lo = bank_lo.max(slope_lo);
     let g = if any_lo > hi {
         // The neighbours (wet ones included) are steeper than s_g across the diamond, or the
         // split edge itself is: no altitude satisfies eq. 12, so take the one whose steepest
         // edge is least steep.
-        least_steep(&std::array::from_fn(|i| (around[i].ground as f64, lens[i])))
+        least_steep(&std::array::from_fn(|i| (around[i].ground, lens[i])))
     } else if lo <= hi {
         wanted.clamp(lo, hi.min(p.max_mountain_altitude_m.max(lo)))
     } else {
@@ -192,11 +190,11 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     // 11 lets a bank near a deep river sit below the surface) or lake and is covered up to the
     // highest such surface; otherwise it is dry. (The paper averages the four neighbours' water
     // levels, which leaves a vertex below one river's surface dry when the others are lower.)
-    let surface = around.iter().filter(|v| is_wet(v)).map(|v| v.water).fold(f32::MIN, f32::max);
-    let water = if (g as f32) < surface { surface as f64 } else { g };
+    let surface = around.iter().filter(|v| is_wet(v)).map(|v| v.water).fold(f64::MIN, f64::max);
+    let water = if g < surface { surface } else { g };
     let mut v = Vertex::new(lifted(g), seed);
-    v.ground = g as f32;
-    v.water = water as f32;
+    v.ground = g;
+    v.water = water;
     v.flags = VertexFlags::REFINED;
     (v, kinds)
 }

@@ -36,16 +36,18 @@ use glam::DVec3;
 /// Marks an absent index.
 pub const NONE: u32 = u32::MAX;
 
-/// One vertex (Table 3, "active vertices"): 48 bytes.
+/// One vertex (Table 3, "active vertices"): 56 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
 pub struct Vertex {
     /// Position, planet-centred metres.
     pub pos: [f64; 3],
-    /// Ground altitude above the base sphere, metres.
-    pub ground: f32,
+    /// Ground altitude above the base sphere, metres. An `f64`, like the position: at the
+    /// highest springs (12 km) an `f32` is only good to a millimetre, and a river drops less
+    /// than that along a 1 cm edge (1 m/km), so its water would stop descending.
+    pub ground: f64,
     /// Water altitude above the base sphere, metres (equals `ground` where dry).
-    pub water: f32,
+    pub water: f64,
     /// An incident edge. For a vertex made by a split this is the half `e1` of the split edge,
     /// which tells a collapse which two edges to merge.
     pub edge: u32,
@@ -171,7 +173,7 @@ pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
 // The WGSL twins of these structs (`shaders/adapt_mesh.wgsl`) spell the same layouts out.
-const _: () = assert!(VERTEX_BYTES == 48 && EDGE_BYTES == 24 && FACE_BYTES == 12);
+const _: () = assert!(VERTEX_BYTES == 56 && EDGE_BYTES == 24 && FACE_BYTES == 12);
 
 impl Mesh {
     pub fn pos(&self, v: u32) -> DVec3 {

@@ -17,7 +17,7 @@ pub fn prefetch<T>(p: *const T) {
     let _ = p;
 }
 
-/// Asks for both cache lines a vertex may straddle (48 bytes, 8-byte aligned).
+/// Asks for both cache lines a vertex may straddle (56 bytes, 8-byte aligned).
 #[inline(always)]
 pub fn prefetch_vertex(p: *const Vertex) {
     prefetch(p);

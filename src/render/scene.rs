@@ -80,7 +80,7 @@ pub fn default_sun(cam: &Camera) -> DVec3 {
 /// highest water of submerged face neighbours, else own water.
 pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f32> {
     let mut level: Vec<f32> =
-        mesh.vertices.par_iter().map(|v| if v.submerged() { v.water } else { f32::NEG_INFINITY }).collect();
+        mesh.vertices.par_iter().map(|v| if v.submerged() { v.water as f32 } else { f32::NEG_INFINITY }).collect();
     // Each face's highest standing water, in parallel; spread to its dry vertices in face order.
     let wet_faces: Vec<([u32; 3], f32)> = triangles
         .par_iter()
@@ -89,7 +89,7 @@ pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f32> {
                 .iter()
                 .map(|&v| &mesh.vertices[v as usize])
                 .filter(|v| v.submerged())
-                .map(|v| v.water)
+                .map(|v| v.water as f32)
                 .fold(f32::NEG_INFINITY, f32::max);
             (wet > f32::NEG_INFINITY).then_some((corners, wet))
         })
@@ -104,7 +104,7 @@ pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f32> {
     level
         .par_iter()
         .zip(mesh.vertices.par_iter())
-        .map(|(&l, v)| if l == f32::NEG_INFINITY { v.water } else { l })
+        .map(|(&l, v)| if l == f32::NEG_INFINITY { v.water as f32 } else { l })
         .collect()
 }
 
@@ -133,7 +133,7 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             let up = p.normalize_or(DVec3::Z);
             RenderVertex {
                 position: (p - eye).as_vec3().to_array(),
-                ground_m: (v.ground as f64 - sea) as f32,
+                ground_m: (v.ground - sea) as f32,
                 normal: n.as_vec3().to_array(),
                 water_m: (*level as f64 - sea) as f32,
                 up: up.as_vec3().to_array(),
@@ -217,7 +217,7 @@ mod tests {
         for (rv, v) in s.vertices.iter().zip(&planet.mesh.vertices) {
             let back = DVec3::from_array(rv.position.map(|x| x as f64)) + eye;
             assert!(back.distance(v.p()) < 4.0, "f32 offset error at 3 radii stays metres");
-            assert!((rv.ground_m as f64 - (v.ground as f64 - p.sea_level_m)).abs() < 1e-3);
+            assert!((rv.ground_m as f64 - (v.ground - p.sea_level_m)).abs() < 1e-3);
         }
         assert_eq!(std::mem::size_of::<RenderVertex>(), 48);
         assert_eq!(std::mem::size_of::<FrameUniforms>(), 176);

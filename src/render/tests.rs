@@ -101,9 +101,7 @@ fn ground_view_shows_a_river_where_the_mesh_has_one() {
     let middle = |r: &&crate::build::network::Reach| r.vertices[r.vertices.len() / 2];
     let reach = reaches
         .iter()
-        .find(|r| {
-            r.vertices.len() > 6 && (mesh.vertices[middle(r) as usize].ground as f64) < params.sea_level_m + 2000.0
-        })
+        .find(|r| r.vertices.len() > 6 && mesh.vertices[middle(r) as usize].ground < params.sea_level_m + 2000.0)
         .expect("a long river");
     let river = middle(&reach);
     assert!(mesh.vertices[river as usize].flags.contains(VertexFlags::RIVER));

@@ -147,7 +147,7 @@ fn metre_edges_by_the_eye_are_decided_alike_at_earth_radius() {
     let v = &base.vertices[land as usize];
     let dir = v.p().normalize();
     let north = (DVec3::Z - dir * dir.z).normalize();
-    let ground = R + v.ground as f64;
+    let ground = R + v.ground;
     let cam = Camera::new(
         dir * (ground + 2.0),
         (dir + north * (50.0 / R)).normalize() * ground,

@@ -83,7 +83,7 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     for v in &surface.vertices {
         hull.push(v.p());
         if v.submerged() {
-            hull.push(lift(v.p(), surface.radius, v.water as f64));
+            hull.push(lift(v.p(), surface.radius, v.water));
         }
     }
     hull.extend(border.iter().map(|&(a, _)| skirt_foot(surface.vertices[a as usize].p(), spec.skirt_m)));
