@@ -347,13 +347,7 @@ fn run_view(
         .iter()
         .map(|q| {
             let (cam, rest) = riverworld::adapt::Camera::parse_query(q, radius).map_err(|e| e.to_string())?;
-            match rest.first() {
-                Some((k, _)) if k == "max_faces" => {
-                    Err("max_faces is not a camera parameter here: use --max-faces".into())
-                }
-                Some((k, _)) => Err(format!("unknown camera parameter {k:?}")),
-                None => Ok(cam),
-            }
+            refuse_other_keys(&rest).map(|()| cam)
         })
         .collect::<Result<Vec<_>, String>>()?;
     if max_faces == Some(0) {
@@ -385,6 +379,16 @@ fn run_view(
     Ok(())
 }
 
+/// Refuses the keys of a `--camera` query that the camera did not take: the budget is a flag
+/// on the command line (`max_faces` joins the query only over HTTP), anything else unknown.
+fn refuse_other_keys(rest: &[(String, String)]) -> Result<(), String> {
+    match rest.first() {
+        Some((k, _)) if k == "max_faces" => Err("max_faces is not a camera parameter here: use --max-faces".into()),
+        Some((k, _)) => Err(format!("unknown camera parameter {k:?}")),
+        None => Ok(()),
+    }
+}
+
 fn run_render(
     planet: &PlanetArgs,
     camera: &str,
@@ -396,9 +400,7 @@ fn run_render(
     use riverworld::render::{self, ImageFormat, Shot};
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let (shot, rest) = Shot::parse_query(camera, spec.params.radius_m).map_err(|e| e.to_string())?;
-    if let Some((k, _)) = rest.first() {
-        return Err(format!("unknown camera parameter {k:?}"));
-    }
+    refuse_other_keys(&rest)?;
     let format = format.unwrap_or_else(|| match out.extension().and_then(|e| e.to_str()) {
         Some(e) if e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg") => ImageFormat::Jpeg,
         _ => ImageFormat::Png,

@@ -16,6 +16,9 @@ use crate::mesh::{Mesh, Renumbering};
 /// Slack kept in the buffers, in faces (vertices and edges scale with it).
 pub const N_ALLOC: usize = 65_536;
 
+/// The slack of the vertex, edge and face buffers: `N_ALLOC` faces' worth of each.
+pub const SLACK: (usize, usize, usize) = (N_ALLOC / 2, N_ALLOC * 3 / 2, N_ALLOC);
+
 /// Removes dead entities, keeping the order of the others, and keeps capacities within the
 /// slack policy.
 pub fn compact(mesh: &mut Mesh) {
@@ -34,9 +37,9 @@ pub fn order(mesh: &mut Mesh) -> Renumbering {
 /// Makes room for `splits` more splits: a buffer too small for them grows to what they need
 /// plus the slack (the paper's reallocation to `n_f + n_alloc`), not to twice its size.
 pub fn make_room(mesh: &mut Mesh, splits: usize) {
-    grow(&mut mesh.faces, 2 * splits, N_ALLOC);
-    grow(&mut mesh.edges, 3 * splits, N_ALLOC * 3 / 2);
-    grow(&mut mesh.vertices, splits, N_ALLOC / 2);
+    grow(&mut mesh.vertices, splits, SLACK.0);
+    grow(&mut mesh.edges, 3 * splits, SLACK.1);
+    grow(&mut mesh.faces, 2 * splits, SLACK.2);
 }
 
 fn grow<T>(buf: &mut Vec<T>, added: usize, slack: usize) {
@@ -46,9 +49,9 @@ fn grow<T>(buf: &mut Vec<T>, added: usize, slack: usize) {
 }
 
 fn fit_all(mesh: &mut Mesh) {
-    fit(&mut mesh.faces, N_ALLOC);
-    fit(&mut mesh.edges, N_ALLOC * 3 / 2);
-    fit(&mut mesh.vertices, N_ALLOC / 2);
+    fit(&mut mesh.vertices, SLACK.0);
+    fit(&mut mesh.edges, SLACK.1);
+    fit(&mut mesh.faces, SLACK.2);
 }
 
 /// Whether a mesh of `faces` faces, `ordered` of which were in spatial order, is worth ordering

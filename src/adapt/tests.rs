@@ -284,12 +284,12 @@ fn coarsening_back_to_orbit_matches_a_direct_orbit_view() {
 
 #[test]
 fn buffers_grow_and_shrink_with_the_papers_slack() {
-    use crate::adapt::compact::N_ALLOC;
+    use crate::adapt::compact::{N_ALLOC, SLACK};
     let within = |m: &Mesh, what: &str| {
         for (name, len, cap, slack) in [
-            ("faces", m.faces.len(), m.faces.capacity(), N_ALLOC),
-            ("edges", m.edges.len(), m.edges.capacity(), N_ALLOC * 3 / 2),
-            ("vertices", m.vertices.len(), m.vertices.capacity(), N_ALLOC / 2),
+            ("vertices", m.vertices.len(), m.vertices.capacity(), SLACK.0),
+            ("edges", m.edges.len(), m.edges.capacity(), SLACK.1),
+            ("faces", m.faces.len(), m.faces.capacity(), SLACK.2),
         ] {
             assert!(len <= cap && cap <= len + 2 * slack, "{what}: {name} {len} in a capacity of {cap}");
         }

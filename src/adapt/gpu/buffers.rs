@@ -5,7 +5,7 @@
 //! reuse the same buffers and only counts cross the bus until the mesh is read back.
 
 use super::{GpuAdaption, GpuError};
-use crate::adapt::compact::N_ALLOC;
+use crate::adapt::compact::SLACK;
 use crate::mesh::{Edge, Face, Mesh, Vertex, EDGE_BYTES, FACE_BYTES, VERTEX_BYTES};
 use wgpu::BufferUsages as U;
 
@@ -80,7 +80,7 @@ impl DeviceMesh {
     /// Buffers with room for `nv` vertices, `ne` edges and `nf` faces plus slack; empty.
     pub(super) fn with_capacity(gpu: &GpuAdaption, nv: usize, ne: usize, nf: usize) -> Result<DeviceMesh, GpuError> {
         let device = &gpu.device;
-        let (cv, ce, cf) = (with_slack(nv, N_ALLOC / 2), with_slack(ne, N_ALLOC * 3 / 2), with_slack(nf, N_ALLOC));
+        let (cv, ce, cf) = (with_slack(nv, SLACK.0), with_slack(ne, SLACK.1), with_slack(nf, SLACK.2));
         let limit = device.limits().max_storage_buffer_binding_size;
         for needed in [cv * VERTEX_BYTES as u64, ce * EDGE_BYTES as u64, cf * FACE_BYTES as u64] {
             if needed > limit {
