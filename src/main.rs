@@ -72,7 +72,8 @@ enum Command {
         /// Repeatable: the cameras are visited in order and the last one is written.
         #[arg(long = "camera", required = true, allow_hyphen_values = true)]
         cameras: Vec<String>,
-        /// Face budget: coarser targets until the view fits.
+        /// Face budget: coarser targets until the view fits. At least the base mesh's faces,
+        /// the coarsest view of the planet.
         #[arg(long)]
         max_faces: Option<usize>,
         /// Output file.
@@ -96,7 +97,7 @@ enum Command {
         /// default: over the viewer's shoulder).
         #[arg(long, allow_hyphen_values = true)]
         camera: String,
-        /// Face budget of the adapted mesh.
+        /// Face budget of the adapted mesh; at least the base mesh's faces.
         #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
         max_faces: u64,
         /// Image format [default: from the --out extension, else png].
@@ -354,6 +355,9 @@ fn run_view(
         return Err("--max-faces must be at least 1".into());
     }
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
+    if let Some(max) = max_faces {
+        riverworld::adapt::check_budget(&built.mesh, max).map_err(|e| format!("--max-faces: {e}"))?;
+    }
     let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
     eprintln!("riverworld: {choice}");
     let on_gpu = gpu.is_some();
@@ -407,6 +411,7 @@ fn run_render(
     });
     let renderer = render::shared().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
+    riverworld::adapt::check_budget(&built.mesh, max_faces).map_err(|e| format!("--max-faces: {e}"))?;
     let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
     eprintln!("riverworld: {choice}");
     let pixels =

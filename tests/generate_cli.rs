@@ -276,6 +276,13 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     ] {
         refused(&["view", "--faces", "200", "--camera", bad, "--out", dir.join("x.glb").to_str().unwrap()], needle);
     }
+    // A budget below the base mesh, the coarsest view there is.
+    let x = dir.join("x.glb");
+    refused(
+        &["view", "--faces", "200", "--camera", cam, "--max-faces", "10", "--out", x.to_str().unwrap()],
+        "--max-faces: 10 faces is below the",
+    );
+    assert!(!x.exists());
 }
 
 #[test]
@@ -305,6 +312,8 @@ fn render_writes_identical_images_in_the_asked_format_and_refuses_bad_input() {
     ] {
         refused(&["render", "--faces", "200", "--camera", bad, "--out", dir.join("x.png").to_str().unwrap()], needle);
     }
+    let x = dir.join("x.png").to_str().unwrap().to_string();
+    refused(&["render", "--faces", "200", "--camera", cam, "--max-faces", "10", "--out", &x], "base mesh");
     assert!(!dir.join("x.png").exists());
 }
 

@@ -165,6 +165,14 @@ async fn configured_caps_bound_faces_raster_width_and_map_pixels() {
     assert_eq!(err["field"], "max_faces");
     assert!(err["message"].as_str().unwrap().contains("1..=1000"), "{err}");
     assert_eq!(s.get(&format!("{view}&max_faces=1000")).await.status().as_u16(), 200);
+    // Nor below the base mesh, the coarsest view there is: that is refused once the planet is
+    // built, and nothing is cached for it.
+    for _ in 0..2 {
+        let err = expect_error(s.get(&format!("{view}&max_faces=10")).await, 422, "invalid_parameter").await;
+        assert_eq!(err["field"], "max_faces");
+        assert!(err["message"].as_str().unwrap().contains("10 faces is below the"), "{err}");
+        assert!(err["message"].as_str().unwrap().contains("base mesh"), "{err}");
+    }
     // Without max_faces the view is capped, not refused.
     assert_eq!(s.get(&view).await.status().as_u16(), 200);
     for file in ["landmask.png", "preview.png", "elevation.tif"] {

@@ -86,6 +86,8 @@ async fn bad_cameras_sizes_and_keys_are_refused() {
         ("sun=1,nan,0", "invalid_camera", "sun"),
         ("fov=0", "invalid_camera", "fov"),
         ("max_faces=0", "invalid_parameter", "max_faces"),
+        // Below the base mesh.
+        ("width=64&height=48&max_faces=10", "invalid_parameter", "max_faces"),
         ("zoom=2", "unknown_parameter", "zoom"),
     ] {
         let res = s.get(&format!("/v1/planets/{id}/render.png?{base}&{query}")).await;

@@ -37,7 +37,37 @@ const MAX_STEP: i32 = 130;
 /// base mesh shrink about `1.25^2`-fold per step: six steps are ~15 times fewer).
 const PROBE_STEPS: i32 = 6;
 
-/// What one adaption did (`riverworld view --stats`).
+/// A face budget smaller than the base mesh, the coarsest mesh adaption can give (collapses
+/// never remove a base vertex).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BudgetBelowBase {
+    pub max_faces: usize,
+    pub base_faces: usize,
+}
+
+impl std::fmt::Display for BudgetBelowBase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} faces is below the {} faces of this planet's base mesh, its coarsest view",
+            self.max_faces, self.base_faces
+        )
+    }
+}
+
+impl std::error::Error for BudgetBelowBase {}
+
+/// Refuses a face budget that no adaption of `base` can respect.
+pub fn check_budget(base: &Mesh, max_faces: usize) -> Result<(), BudgetBelowBase> {
+    match base.faces.len() {
+        n if max_faces < n => Err(BudgetBelowBase { max_faces, base_faces: n }),
+        _ => Ok(()),
+    }
+}
+
+/// What one adaption did (`riverworld view --stats`). Splits, collapses and passes count all
+/// the work done: with a face budget, that includes the trials of the search for the scale
+/// that fits (see [`Adapter::fit_budget`]), whose meshes are thrown away.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct AdaptStats {
     pub faces: usize,
@@ -207,6 +237,8 @@ impl Adapter {
     /// are scaled by the smallest power of 1.25 whose converged mesh fits (the most important
     /// splits, the largest projected edges, are the ones kept), so the result still depends only
     /// on the camera and the budget. See [`Adapter::fit_budget`] for how that power is found.
+    /// A budget below the base mesh (see [`check_budget`]) leaves the base mesh and reports
+    /// `converged: false`.
     pub fn adapt(&mut self, cam: &Camera, max_faces: Option<usize>) -> AdaptStats {
         let start = Instant::now();
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };

@@ -237,6 +237,27 @@ fn face_budget_is_respected_and_path_independent() {
 }
 
 #[test]
+fn a_budget_below_the_base_mesh_is_refused() {
+    let base_faces = base().mesh.faces.len();
+    assert_eq!(check_budget(&base().mesh, base_faces), Ok(()));
+    let e = check_budget(&base().mesh, base_faces - 1).unwrap_err();
+    assert_eq!(e, BudgetBelowBase { max_faces: base_faces - 1, base_faces });
+    assert!(e.to_string().contains(&format!("{} faces is below the {base_faces} faces", base_faces - 1)), "{e}");
+    // Asked anyway, adaption gives the coarsest mesh there is and says it did not converge,
+    // fresh or after a finer view.
+    let cam = camera(10.0, 20.0, 50_000.0, 150_000.0, 1.0);
+    for before in [None, Some(camera(12.0, 21.0, 3_000.0, 9_000.0, 1.0))] {
+        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        if let Some(b) = &before {
+            a.adapt(b, None);
+        }
+        let s = a.adapt(&cam, Some(base_faces - 1));
+        assert!(!s.converged && s.faces == base_faces, "{s:?}");
+        assert!(canonical(a.mesh()) == canonical(&base().mesh));
+    }
+}
+
+#[test]
 fn face_budget_takes_the_finest_target_that_fits_from_any_start() {
     let cam = camera(10.0, 20.0, 50_000.0, 150_000.0, 1.0);
     let ground = camera(12.0, 21.0, 3_000.0, 9_000.0, 1.0);
@@ -349,8 +370,13 @@ mod paths {
             .prop_map(|(lat, lon, log_h, ahead)| camera(lat, lon, 10f64.powf(log_h), 10f64.powf(log_h) * ahead, 6.0))
     }
 
+    /// No budget, or one between the base mesh and 60,000 faces.
+    fn budget_strategy() -> impl Strategy<Value = Option<usize>> {
+        prop::option::of(0usize..50_000).prop_map(|b| b.map(|b| base().mesh.faces.len() + b))
+    }
+
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 6, ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
         #[test]
         fn any_camera_path_ends_in_the_direct_mesh(path in prop::collection::vec(cam_strategy(), 1..4), last in cam_strategy()) {
             let mut all = path.clone();
@@ -359,6 +385,28 @@ mod paths {
             let (direct, s2) = adapted(std::slice::from_ref(&last));
             prop_assert!(s1.converged && s2.converged);
             prop_assert!(canonical(&via) == canonical(&direct));
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+        #[test]
+        fn any_budgeted_path_ends_in_the_direct_mesh(
+            path in prop::collection::vec((cam_strategy(), budget_strategy()), 1..4),
+            last in cam_strategy(),
+            max in budget_strategy(),
+        ) {
+            let mut via = Adapter::new(base().mesh.clone(), Params::default());
+            for (cam, budget) in &path {
+                via.adapt(cam, *budget);
+            }
+            let s1 = via.adapt(&last, max);
+            let mut direct = Adapter::new(base().mesh.clone(), Params::default());
+            let s2 = direct.adapt(&last, max);
+            prop_assert!(s1.converged && s2.converged);
+            prop_assert_eq!(s1.lod_scale, s2.lod_scale);
+            prop_assert!(max.is_none_or(|m| s1.faces <= m));
+            prop_assert!(canonical(via.mesh()) == canonical(direct.mesh()));
         }
     }
 }

@@ -110,11 +110,25 @@ fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
     query.split(['&', ';']).filter(|p| !p.is_empty()).map(|p| p.split_once('=').unwrap_or((p, "")))
 }
 
+/// Refuses a `max_faces` below the built planet's base mesh (422 naming `max_faces`): no view
+/// of it can be coarser.
+pub fn check_budget(planet: &Planet, max_faces: usize) -> Result<(), ApiError> {
+    crate::adapt::check_budget(&planet.mesh, max_faces)
+        .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string()))
+}
+
 /// Renders a resource from a built planet (blocking; runs off the async runtime).
-fn render(res: Resource, job: &Job, planet: &Planet, params: &Params, gpu: Option<Arc<GpuAdaption>>) -> Vec<u8> {
+fn render(
+    res: Resource,
+    job: &Job,
+    planet: &Planet,
+    params: &Params,
+    gpu: Option<Arc<GpuAdaption>>,
+) -> Result<Vec<u8>, ApiError> {
     let mesh = &planet.mesh;
-    match (res, job) {
+    Ok(match (res, job) {
         (_, Job::View { cam, max_faces }) => {
+            check_budget(planet, *max_faces)?;
             let mut adapter = Adapter::new(mesh.clone(), params.clone()).with_gpu(gpu);
             adapter.adapt(cam, Some(*max_faces));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
@@ -126,7 +140,7 @@ fn render(res: Resource, job: &Job, planet: &Planet, params: &Params, gpu: Optio
             export::preview_png(mesh, &planet.rivers, params, *width, (*width / 2).max(1))
         }
         (_, Job::Raster { width }) => export::elevation_tiff(mesh, params, *width, (*width / 2).max(1)),
-    }
+    })
 }
 
 /// Strong validator of one answer: the software version, id, route and normalised query.
@@ -170,7 +184,7 @@ pub async fn get(
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
     let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
     let gpu = state.adaption.clone();
-    cached(state, entry, derived, headers, move |planet| Ok(render(res, &job, &planet, &params, gpu))).await
+    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu)).await
 }
 
 /// One answer derived from a built planet: its route below the planet and normalised query

@@ -8,7 +8,7 @@
 //! heavy-work permits.
 
 use super::error::ApiError;
-use super::resources::{cached, unknown_key, whole_number_in, Derived, DEFAULT_MAX_FACES};
+use super::resources::{cached, check_budget, unknown_key, whole_number_in, Derived, DEFAULT_MAX_FACES};
 use super::state::AppState;
 use crate::render::{self, ImageFormat, RenderError, Shot};
 use axum::extract::{Path, RawQuery, State};
@@ -72,6 +72,7 @@ async fn snapshot(
     let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
     let gpu = state.adaption.clone();
     cached(state, entry, derived, h, move |planet| {
+        check_budget(&planet, max_faces)?;
         let cam = &shot.camera;
         let rgba =
             render::snapshot(renderer, &planet.mesh, &params, &shot, max_faces, gpu).map_err(|e| unavailable(&e))?;
