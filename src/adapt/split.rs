@@ -2,6 +2,12 @@
 //! parallel pass in which each split computes its new vertex from its four neighbours
 //! (positions by eq. 2 / eq. 7–9, altitudes by step 6 and eq. 10–12) and makes the topology
 //! change.
+//!
+//! The paper's step 7 (normals of `f1..f4` and of the new vertex) is not a split's work here: the
+//! paper keeps normals for its renderer (12 bytes a face, 24 a vertex), while every consumer of
+//! the adapted mesh (view glb, tiles, snapshots) takes area-weighted vertex normals of the final
+//! mesh from its `f64` positions (`export::surface_normals`), which costs no memory per vertex
+//! and cannot go stale after a collapse.
 
 use super::camera::View;
 use super::state::wants_edge;
