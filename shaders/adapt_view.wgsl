@@ -6,12 +6,12 @@
 
 struct View {
     eye: array<f64, 3>,
-    planes: array<array<f64, 3>, 4>,
+    planes: array<array<f64, 3>, 5>,
+    per_unit: array<f64, 5>,
     eye_dir: array<f64, 3>,
     horizon: f64,
     c_land: f64,
     c_water: f64,
-    falloff: f64,
     min_len: f64,
     c_lod: f64,
     edges: u32,
@@ -43,10 +43,10 @@ fn wants_split(lod_len: f64, centre: vec3<f64>, radius: f64, sea: bool) -> bool 
         return false;
     }
     var outside = f64(0.0);
-    for (var i = 0u; i < 4u; i++) {
-        outside = max(outside, -dot3(triple(view.planes[i]), rel) - radius);
+    for (var i = 0u; i < 5u; i++) {
+        outside = max(outside, (-dot3(triple(view.planes[i]), rel) - radius) * view.per_unit[i]);
     }
-    let q = outside / (max(len + radius, f64(1e-3)) * view.falloff);
+    let q = outside / max(len + radius, f64(1e-3));
     d = d * (f64(1.0) + view.c_lod * q * q); // eq. 6
     return lod_len > c * d;
 }

@@ -121,7 +121,7 @@ pub fn run(spec: &PlanetSpec) {
         // The same camera again, as frame-to-frame adaption sees a static view: the adapter
         // puts the mesh it keeps in spatial order first (see adapt/compact.rs).
         let again = a.adapt(cam, None);
-        let view = View::new(cam, r, p.min_edge_length_m);
+        let view = View::new(cam, r, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh));
         let t = Instant::now();
         let reps = 5;
         for _ in 0..reps {

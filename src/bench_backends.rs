@@ -82,7 +82,11 @@ pub fn run(spec: &PlanetSpec) {
     let Scene { planet, views, path } = Scene::new(spec);
     let p = &spec.params;
     // Compile the pipeline and size the buffers outside the timings.
-    let _ = gpu::edge_wants(&g, &planet.mesh, &View::new(&views[0].1, p.radius_m, p.min_edge_length_m));
+    let _ = gpu::edge_wants(
+        &g,
+        &planet.mesh,
+        &View::new(&views[0].1, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh)),
+    );
     println!(
         "Adaption from the base mesh ({} faces). Every stage on the device: state update, split-list \
          compaction, splits, collapses and compaction (the spatial order between cameras is computed \
@@ -119,7 +123,7 @@ pub fn run(spec: &PlanetSpec) {
     println!("|---|---:|---:|---:|---:|---:|---:|");
     for (name, cam, mesh) in finals {
         let Some(cam) = cam else { continue };
-        let view = View::new(&cam, p.radius_m, p.min_edge_length_m);
+        let view = View::new(&cam, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh));
         let cpu_ms = median_ms(5, || {
             std::hint::black_box(state::edge_wants(&mesh, &view));
         });

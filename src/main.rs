@@ -73,7 +73,7 @@ enum Command {
         #[arg(long = "camera", required = true, allow_hyphen_values = true)]
         cameras: Vec<String>,
         /// Face budget: coarser targets until the view fits. At least the base mesh's faces,
-        /// the coarsest view of the planet.
+        /// the coarsest view of the planet [default: no limit].
         #[arg(long)]
         max_faces: Option<usize>,
         /// Output file.
@@ -342,6 +342,7 @@ fn run_view(
     stats: bool,
     backend: riverworld::adapt::gpu::Backend,
 ) -> Result<(), String> {
+    let file_name = out_file_name(out)?;
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let radius = spec.params.radius_m;
     let cams = cameras
@@ -372,11 +373,8 @@ fn run_view(
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
     let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin);
-    generate::write_outputs(
-        out.parent().unwrap_or(std::path::Path::new(".")),
-        &[(out.file_name().and_then(|n| n.to_str()).unwrap_or("view.glb"), glb)],
-    )
-    .map_err(|e| e.to_string())?;
+    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])
+        .map_err(|e| e.to_string())?;
     if stats {
         println!("{}", serde_json::to_string_pretty(&last).expect("stats serialise"));
     }
@@ -402,6 +400,7 @@ fn run_render(
     backend: riverworld::adapt::gpu::Backend,
 ) -> Result<(), String> {
     use riverworld::render::{self, ImageFormat, Shot};
+    let file_name = out_file_name(out)?;
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let (shot, rest) = Shot::parse_query(camera, spec.params.radius_m).map_err(|e| e.to_string())?;
     refuse_other_keys(&rest)?;
@@ -417,11 +416,16 @@ fn run_render(
     let pixels =
         render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(|e| e.to_string())?;
     let bytes = render::encode(&pixels, shot.camera.width, shot.camera.height, format);
-    generate::write_outputs(
-        out.parent().unwrap_or(std::path::Path::new(".")),
-        &[(out.file_name().and_then(|n| n.to_str()).unwrap_or("render.png"), bytes)],
-    )
-    .map_err(|e| e.to_string())
+    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, bytes)])
+        .map_err(|e| e.to_string())
+}
+
+/// The file name that `--out` ends in (it may not end in `..` or a separator).
+fn out_file_name(out: &std::path::Path) -> Result<&str, String> {
+    match out.file_name() {
+        Some(n) => n.to_str().ok_or_else(|| format!("--out {}: the file name is not UTF-8", out.display())),
+        None => Err(format!("--out {}: names no file", out.display())),
+    }
 }
 
 fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8) -> Result<(), String> {

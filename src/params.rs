@@ -113,7 +113,10 @@ impl Params {
                 let l = if open_lo { "(" } else { "[" };
                 Err(ParamError {
                     field: format!("params.{name}"),
-                    message: format!("must be in {l}{lo}, {hi}] {unit}, got {v}"),
+                    message: format!(
+                        "must be in {l}{lo}, {hi}]{}, got {v}",
+                        if unit.is_empty() { String::new() } else { format!(" {unit}") }
+                    ),
                 })
             }
         };

@@ -283,6 +283,11 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
         "--max-faces: 10 faces is below the",
     );
     assert!(!x.exists());
+    // An output path that names no file.
+    let up = format!("{}/..", dir.join("sub").display());
+    refused(&["view", "--faces", "200", "--camera", cam, "--out", &up], "names no file");
+    refused(&["render", "--faces", "200", "--camera", cam, "--out", &up], "names no file");
+    assert!(!dir.join("view.glb").exists() && !dir.join("render.png").exists());
 }
 
 #[test]

@@ -9,7 +9,7 @@ use server_common::*;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-const VIEW: &str = "eye=7e6,0,3e6&target=0,0,0&width=320&height=180&land_px=8&max_faces=20000";
+const VIEW: &str = "eye=7e6,0,3e6&target=0,0,0&width=320&height=180&land_px=8&max_faces=400000";
 
 async fn post_json(p: &Process, body: &str) -> (u16, Value) {
     let res = p

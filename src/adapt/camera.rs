@@ -8,8 +8,8 @@
 //! pixels. To make the adapted mesh independent of the path that led to it, `l` and `d` are taken
 //! from per-edge bounds that only weaken from parent edge to child (see `Edge::lod`): `d` is
 //! the distance to a ball that contains every child's ball, eq. 6's
-//! slow-down outside the frustum uses how far that ball lies outside the frustum planes, and
-//! back-face culling drops balls entirely behind the planet's horizon.
+//! slow-down outside the frustum uses how far that ball lies outside the frustum planes (and
+//! behind the eye), and back-face culling drops balls entirely behind the planet's horizon.
 
 use glam::DVec3;
 
@@ -21,8 +21,6 @@ pub const C_LOD: f64 = 20.0;
 pub const DEFAULT_LAND_PX: f64 = 8.0;
 /// Default target projected edge length on the sea, pixels (the paper: ten times the land's).
 pub const DEFAULT_WATER_PX: f64 = 40.0;
-/// Height above the base sphere that horizon culling allows for (the highest mountains).
-pub const HORIZON_HEIGHT: f64 = 20_000.0;
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 8192;
 /// Largest accepted coordinate magnitude, metres (about 7 AU): lengths and normals of vectors
@@ -61,7 +59,7 @@ fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
     }
     let mut v = [0.0; 3];
     for (i, p) in parts.iter().enumerate() {
-        v[i] = p.parse::<f64>().map_err(|_| err(field, format!("{p:?} is not a number")))?;
+        v[i] = p.parse::<f64>().map_err(|_| err(field, not_a_number(p)))?;
         if !v[i].is_finite() {
             return Err(err(field, format!("{p:?} is not finite")));
         }
@@ -72,8 +70,16 @@ fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
     Ok(DVec3::from_array(v))
 }
 
+/// "... is not a number", with a hint where a `+` of an exponent was decoded as a space.
+fn not_a_number(s: &str) -> String {
+    match s.trim().contains(' ') {
+        true => format!("{s:?} is not a number (a query decodes + as a space: write it %2B, or leave it out)"),
+        false => format!("{s:?} is not a number"),
+    }
+}
+
 fn number(field: &'static str, s: &str) -> Result<f64, CameraError> {
-    let v: f64 = s.trim().parse().map_err(|_| err(field, format!("{s:?} is not a number")))?;
+    let v: f64 = s.trim().parse().map_err(|_| err(field, not_a_number(s)))?;
     if v.is_finite() {
         Ok(v)
     } else {
@@ -132,7 +138,10 @@ impl Camera {
         if eye.length() < radius {
             return Err(err(
                 "eye",
-                format!("is inside the planet ({:.0} m from the centre, radius {radius:.0} m)", eye.length()),
+                format!(
+                    "is inside the planet's base sphere ({:.0} m from the centre; its radius is {radius:.0} m)",
+                    eye.length()
+                ),
             ));
         }
         let dir = target - eye;
@@ -213,7 +222,10 @@ fn default_up(eye: DVec3, fwd: DVec3) -> DVec3 {
 }
 
 fn size(field: &'static str, s: &str) -> Result<u32, CameraError> {
-    s.trim().parse::<u32>().map_err(|_| err(field, format!("{s:?} is not a whole number of pixels")))
+    s.trim().parse::<u32>().map_err(|e| match e.kind() {
+        std::num::IntErrorKind::PosOverflow => err(field, format!("must be in 1..={MAX_SIDE}, got {}", s.trim())),
+        _ => err(field, format!("{s:?} is not a whole number of pixels")),
+    })
 }
 
 /// Decodes `%XX` escapes and `+` (as space) in a query value.
@@ -223,15 +235,11 @@ fn percent_decode(s: &str) -> String {
     let mut i = 0;
     while i < bytes.len() {
         match bytes[i] {
-            b'%' if i + 2 < bytes.len() => {
-                match u8::from_str_radix(std::str::from_utf8(&bytes[i + 1..i + 3]).unwrap_or("zz"), 16) {
-                    Ok(b) => {
-                        out.push(b);
-                        i += 3;
-                        continue;
-                    }
-                    Err(_) => out.push(b'%'),
-                }
+            b'%' if i + 2 < bytes.len() && bytes[i + 1..i + 3].iter().all(u8::is_ascii_hexdigit) => {
+                let hex = std::str::from_utf8(&bytes[i + 1..i + 3]).expect("hex digits");
+                out.push(u8::from_str_radix(hex, 16).expect("hex digits"));
+                i += 3;
+                continue;
             }
             b'+' => out.push(b' '),
             b => out.push(b),
@@ -245,13 +253,16 @@ fn percent_decode(s: &str) -> String {
 #[derive(Clone, Debug)]
 pub struct View {
     pub eye: DVec3,
-    /// Inward normals of the four side planes of the frustum (through the eye).
-    pub(crate) planes: [DVec3; 4],
+    /// Inward normals of the frustum's side planes (left, right, bottom, top) and of the plane
+    /// facing forward, all through the eye.
+    pub(crate) planes: [DVec3; 5],
+    /// Eq. 6's unit for each plane: one over the tangent of the half field of view across it
+    /// (horizontal for left and right, vertical for bottom and top, the narrower behind the
+    /// eye), as clip space measures each axis in its own half field of view.
+    pub(crate) per_unit: [f64; 5],
     /// Split when `lod_len / distance > c`.
     pub c_land: f64,
     pub c_water: f64,
-    /// Scale for the eq. 6 falloff: the tangent of the half vertical field of view.
-    pub(crate) falloff: f64,
     /// Horizon plane: a ball whose support along `eye_dir` is below this is behind the horizon.
     pub(crate) eye_dir: DVec3,
     pub(crate) horizon: f64,
@@ -260,30 +271,38 @@ pub struct View {
 }
 
 impl View {
-    /// `radius` is the base sphere; `min_len` the minimum edge length.
-    pub fn new(cam: &Camera, radius: f64, min_len: f64) -> View {
+    /// `radius` is the base sphere; `min_len` the minimum edge length; `top` the highest
+    /// altitude above the base sphere that terrain may reach (see [`super::terrain_top`]):
+    /// horizon culling keeps whatever could stand that high.
+    pub fn new(cam: &Camera, radius: f64, min_len: f64, top: f64) -> View {
         let (f, r, u) = cam.basis();
         let tan_v = (cam.fov_deg.to_radians() * 0.5).tan();
         let tan_h = tan_v * cam.width as f64 / cam.height as f64;
-        // Side planes through the eye, normals pointing into the frustum.
+        // Side planes through the eye, normals pointing into the frustum; then the plane through
+        // the eye facing forward, outside of which lies everything behind the eye.
         let planes = [
             (f * tan_h - r).normalize(),
             (f * tan_h + r).normalize(),
             (f * tan_v - u).normalize(),
             (f * tan_v + u).normalize(),
+            f,
         ];
+        let per_unit = [tan_h, tan_h, tan_v, tan_v, tan_h.min(tan_v)].map(|t| 1.0 / t);
         let ppr = cam.pixels_per_radian();
-        // Horizon: a point as high as HORIZON_HEIGHT above the base sphere is hidden once its
-        // angle from the eye's direction exceeds the eye's horizon angle plus its own.
+        // Horizon: a point `top` above the base sphere is hidden once its angle from the eye's
+        // direction exceeds the eye's horizon angle plus its own, `beyond` (under 180°). The
+        // plane lies below every point from the base sphere up to `top` within that angle: at
+        // `radius` while `beyond` is under 90°, at `radius + top` past it (far eyes), where
+        // the cosine is negative.
         let d_eye = cam.eye.length();
-        let beyond = (radius / d_eye).clamp(-1.0, 1.0).acos() + (radius / (radius + HORIZON_HEIGHT)).acos();
-        let horizon_plane = if beyond < std::f64::consts::PI { radius * beyond.cos() } else { f64::MIN };
+        let beyond = (radius / d_eye).clamp(-1.0, 1.0).acos() + (radius / (radius + top.max(0.0))).acos();
+        let horizon_plane = (radius * beyond.cos()).min((radius + top.max(0.0)) * beyond.cos());
         View {
             eye: cam.eye,
             planes,
+            per_unit,
             c_land: cam.land_px / ppr,
             c_water: cam.water_px / ppr,
-            falloff: tan_v,
             eye_dir: cam.eye / d_eye,
             horizon: horizon_plane,
             min_len: min_len.max(0.0),
@@ -313,14 +332,14 @@ impl View {
             return false;
         }
         let mut outside: f64 = 0.0;
-        for n in &self.planes {
-            outside = outside.max(-n.dot(rel) - radius);
+        for (n, unit) in self.planes.iter().zip(&self.per_unit) {
+            outside = outside.max((-n.dot(rel) - radius) * unit);
         }
-        // Eq. 6 measures how far outside the frustum a point is in projected units; here the
-        // ball's distance outside the side planes over its farthest distance from the eye (an
-        // angle-like ratio that can only grow from a ball to a ball inside it), in units of the
-        // half-field of view.
-        let q = outside / ((dist + radius).max(1e-3) * self.falloff);
+        // Eq. 6 measures how far outside the frustum a point is in projected units, each axis in
+        // its own half field of view; here the ball's distance outside each plane in units of
+        // that plane's half field of view, over the ball's farthest distance from the eye (an
+        // angle-like ratio that can only grow from a ball to a ball inside it).
+        let q = outside / (dist + radius).max(1e-3);
         let d = d * (1.0 + C_LOD * q * q); // eq. 6
         lod_len > c * d
     }
@@ -330,6 +349,8 @@ impl View {
 mod tests {
     use super::*;
     const R: f64 = 6_371_000.0;
+    /// Highest terrain of the default parameters, horizon margin included.
+    const TOP: f64 = 20_000.0;
 
     #[test]
     fn parses_a_query_with_defaults() {
@@ -363,6 +384,19 @@ mod tests {
             let e = Camera::parse_query(q, R).unwrap_err();
             assert_eq!(e.field, field, "{q}: {e}");
         }
+        // Messages that say what to do.
+        for (q, needle) in [
+            ("eye=6.4e+6,0,0&target=0,0,0", "write it %2B"),
+            ("eye=2e7,0,0&target=0,0,0&fov=1e+1", "write it %2B"),
+            ("eye=2e7,0,0&target=0,0,0&width=99999999999", "must be in 1..=8192, got 99999999999"),
+            ("eye=2e7,0,0&target=0,0,0&height=1.5", "not a whole number of pixels"),
+        ] {
+            let e = Camera::parse_query(q, R).unwrap_err().to_string();
+            assert!(e.contains(needle), "{q}: {e}");
+        }
+        assert!(Camera::parse_query("eye=6.4e%2B6,0,0&target=0,0,0", R).is_ok());
+        // Only two hex digits make an escape.
+        assert_eq!(percent_decode("a%+5b%2C%zz%4"), "a% 5b,%zz%4");
     }
 
     #[test]
@@ -385,27 +419,45 @@ mod tests {
 
     #[test]
     fn criterion_is_hereditary_for_nested_balls() {
-        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01);
+        // Looking at the planet; along its surface, with much of it behind the eye; and through
+        // a sliver of a view, wide or tall.
+        for (query, far) in [
+            ("eye=7e6,0,0&target=0,0,0&fov=40", 1e9),
+            ("eye=6.38e6,0,0&target=6.38e6,1e5,0&fov=10", 1e9),
+            ("eye=6.4e6,0,0&target=0,0,0&fov=2&width=8192&height=1", 1e12),
+            ("eye=6.4e6,0,0&target=0,0,0&fov=170&width=1&height=4000", 1e9),
+        ] {
+            let cam = Camera::parse_query(query, R).unwrap().0;
+            nested_balls_agree(&View::new(&cam, R, 0.01, TOP), far);
+        }
+    }
+
+    /// A child ball inside its parent with a shorter length never splits where the parent does
+    /// not; `far` scales the edge lengths tried.
+    fn nested_balls_agree(view: &View, far: f64) {
         let mut rng = crate::rng::Sequence::new(1, 1);
+        let mut splits = 0;
         for _ in 0..20_000 {
-            let dir = DVec3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5).normalize();
-            let c = dir * R;
+            // Around the point under the eye, on both sides of the horizon.
+            let jitter = DVec3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5) * 0.3;
+            let c = (view.eye_dir + jitter).normalize() * R;
             let r = rng.unit() * 200_000.0;
-            let len = rng.unit() * 100_000.0;
+            let len = far.powf(rng.unit());
             let off = DVec3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5) * r;
             let rc = r - off.length() - rng.unit() * 1000.0;
             let lc = len * rng.unit();
             if view.wants_split(lc, c + off, rc, false) {
                 assert!(view.wants_split(len, c, r, false));
+                splits += 1;
             }
         }
+        assert!(splits > 100, "only {splits} children split");
     }
 
     #[test]
     fn frustum_planes_point_inwards() {
         let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40&width=800&height=400", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01);
+        let view = View::new(&cam, R, 0.01, TOP);
         let (f, r, u) = cam.basis();
         for n in &view.planes {
             assert!(n.dot(f) > 0.0);
@@ -427,7 +479,7 @@ mod tests {
     #[test]
     fn outside_the_frustum_distance_grows_by_eq_6() {
         let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=60", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01);
+        let view = View::new(&cam, R, 0.01, TOP);
         let (f, _, u) = cam.basis();
         let dist = 1.0e7;
         let mut last = 0.0;
@@ -446,10 +498,92 @@ mod tests {
         assert!((last / (view.c_land * dist) - 36.2).abs() < 0.05, "{}", last / (view.c_land * dist));
     }
 
+    /// The threshold factor `1 + 20 q²` of eq. 6 at `centre` (a point, radius 0), from when a
+    /// split starts: the smallest `lod_len` that splits, over `c_land` times the distance.
+    fn eq6_factor(view: &View, centre: DVec3) -> f64 {
+        let d = centre.distance(view.eye);
+        let (mut lo, mut hi) = (view.c_land * d * 0.5, view.c_land * d * 1e6);
+        for _ in 0..200 {
+            let mid = (lo * hi).sqrt();
+            if view.wants_split(mid, centre, 0.0, false) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        hi / (view.c_land * d)
+    }
+
+    /// Left and right of the frustum, eq. 6 counts in the horizontal half field of view (clip
+    /// space's x), above and below in the vertical one.
+    #[test]
+    fn each_side_counts_in_its_own_half_field_of_view() {
+        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=60&width=1920&height=1080", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01, TOP);
+        let (f, r, u) = cam.basis();
+        let tan_v = 30f64.to_radians().tan();
+        let tan_h = tan_v * 1920.0 / 1080.0;
+        let (half_h, dist) = (tan_h.atan(), 1.0e7);
+        for beyond in [5f64, 10.0, 20.0] {
+            let b = beyond.to_radians();
+            let t = half_h + b;
+            let right = cam.eye + (f * t.cos() + r * t.sin()) * dist;
+            let q = b.sin() / tan_h;
+            assert!((eq6_factor(&view, right) - (1.0 + C_LOD * q * q)).abs() < 1e-6, "{beyond}° right");
+            let t = 30f64.to_radians() + b;
+            let above = cam.eye + (f * t.cos() + u * t.sin()) * dist;
+            let q = b.sin() / tan_v;
+            assert!((eq6_factor(&view, above) - (1.0 + C_LOD * q * q)).abs() < 1e-6, "{beyond}° above");
+        }
+    }
+
+    /// Behind the eye the falloff stays as strong as beside it: ground behind a telephoto
+    /// camera needs edges about as long as ground at right angles to the view (the side planes
+    /// alone asked 40 times less right behind it), and right behind, longer.
+    #[test]
+    fn behind_the_eye_is_as_coarse_as_beside_it() {
+        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=10", R).unwrap().0;
+        let view = View::new(&cam, R, 0.01, TOP);
+        let (f, _, u) = cam.basis();
+        let dist = 1.0e6;
+        let factor = |deg: f64| {
+            let t = deg.to_radians();
+            eq6_factor(&view, cam.eye + (f * t.cos() + u * t.sin()) * dist)
+        };
+        let beside = factor(90.0);
+        for deg in (91..=180).step_by(3) {
+            // The least, ~137.5°, where the top plane's excess (sin(θ - 5°)) meets the
+            // behind plane's (-cos θ): q is 0.74 of its value at 90°.
+            assert!(factor(deg as f64) > 0.5 * beside, "{deg}°");
+        }
+        // Right behind: q = 1 / tan(5°).
+        let q = 1.0 / 5f64.to_radians().tan();
+        let behind = factor(180.0);
+        assert!((behind - (1.0 + C_LOD * q * q)).abs() / behind < 1e-6, "{behind}");
+        assert!(behind > beside);
+    }
+
+    /// Seen from far away (more than a hemisphere's worth of horizon angle), terrain as high as
+    /// `top` at the limb is still in view; beyond the limb it is culled.
+    #[test]
+    fn the_horizon_of_a_far_eye_keeps_the_limb() {
+        let d = 1.0e8;
+        let cam = Camera::parse_query(&format!("eye={d},0,0&target=0,0,0"), R).unwrap().0;
+        let view = View::new(&cam, R, 0.01, TOP);
+        let beyond = (R / d).acos() + (R / (R + TOP)).acos();
+        assert!(beyond > std::f64::consts::FRAC_PI_2);
+        let at = |angle: f64, height: f64| DVec3::new(angle.cos(), angle.sin(), 0.0) * (R + height);
+        let long = 1e9;
+        assert!(view.wants_split(long, at(beyond - 1e-4, TOP), 0.0, false));
+        assert!(view.wants_split(long, at(beyond - 1e-4, TOP * 0.5), 0.0, false));
+        assert!(!view.wants_split(long, at(beyond + 1e-3, TOP), 0.0, false));
+        assert!(!view.wants_split(long, at(beyond + 1e-3, 0.0), 0.0, false));
+    }
+
     #[test]
     fn nearer_and_longer_edges_split_first() {
         let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01);
+        let view = View::new(&cam, R, 0.01, TOP);
         let near = DVec3::new(R, 0.0, 0.0);
         assert!(view.wants_split(100_000.0, near, 0.0, false));
         assert!(!view.wants_split(100.0, near, 0.0, false));

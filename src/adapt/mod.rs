@@ -37,6 +37,20 @@ const MAX_STEP: i32 = 130;
 /// base mesh shrink about `1.25^2`-fold per step: six steps are ~15 times fewer).
 const PROBE_STEPS: i32 = 6;
 
+/// How far above the highest terrain that the parameters and the base mesh allow horizon
+/// culling still looks: splits may lift a vertex somewhat above those bounds (a riverbank
+/// rising from a spring at the highest altitude allowed).
+pub const HORIZON_MARGIN: f64 = 7_000.0;
+
+/// The highest altitude above the base sphere, metres, that terrain or water adapted from
+/// `base` with `params` may reach, margin included: the highest mountain, spring or sea level
+/// the parameters allow, or the highest vertex of the base mesh where a map put one above them.
+pub fn terrain_top(params: &Params, base: &Mesh) -> f64 {
+    let highest = base.vertices.iter().map(|v| v.ground.max(v.water)).fold(f64::MIN, f64::max);
+    let allowed = params.max_mountain_altitude_m.max(params.max_river_altitude_m).max(params.sea_level_m);
+    allowed.max(highest) + HORIZON_MARGIN
+}
+
 /// A face budget smaller than the base mesh, the coarsest mesh adaption can give (collapses
 /// never remove a base vertex).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,6 +147,8 @@ pub struct Adapter {
     base: Mesh,
     /// Whether the mesh is still the base mesh (nothing adapted yet).
     fresh: bool,
+    /// [`terrain_top`] of the base mesh.
+    top: f64,
     /// Step of the last budget search (see [`Adapter::fit_budget`]); `None` before the first.
     last_step: Option<i32>,
     /// Faces of the mesh when its buffers were last put in spatial order (see `compact.rs`).
@@ -150,6 +166,7 @@ impl Adapter {
     pub fn new(base: Mesh, params: Params) -> Adapter {
         Adapter {
             mesh: base.clone(),
+            top: terrain_top(&params, &base),
             params,
             ordered_faces: base.faces.len(),
             base,
@@ -267,7 +284,7 @@ impl Adapter {
 
     /// The view of `cam` with its pixel targets scaled by `1.25^step`.
     fn view(&self, cam: &Camera, step: i32) -> View {
-        let mut view = View::new(cam, self.params.radius_m, self.params.min_edge_length_m);
+        let mut view = View::new(cam, self.params.radius_m, self.params.min_edge_length_m, self.top);
         let scale = BUDGET_STEP.powi(step);
         view.c_land *= scale;
         view.c_water *= scale;

@@ -14,12 +14,12 @@ const WORKGROUP: u32 = 256;
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct GpuView {
     pub eye: [f64; 3],
-    pub planes: [[f64; 3]; 4],
+    pub planes: [[f64; 3]; 5],
+    pub per_unit: [f64; 5],
     pub eye_dir: [f64; 3],
     pub horizon: f64,
     pub c_land: f64,
     pub c_water: f64,
-    pub falloff: f64,
     pub min_len: f64,
     pub c_lod: f64,
     /// Edges to decide.
@@ -33,11 +33,11 @@ impl GpuView {
         GpuView {
             eye: view.eye.to_array(),
             planes: view.planes.map(|p| p.to_array()),
+            per_unit: view.per_unit,
             eye_dir: view.eye_dir.to_array(),
             horizon: view.horizon,
             c_land: view.c_land,
             c_water: view.c_water,
-            falloff: view.falloff,
             min_len: view.min_len,
             c_lod: C_LOD,
             edges,

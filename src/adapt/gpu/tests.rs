@@ -32,7 +32,7 @@ fn gpu() -> Arc<GpuAdaption> {
 
 fn view(cam: &Camera) -> View {
     let p = Params::default();
-    View::new(cam, p.radius_m, p.min_edge_length_m)
+    View::new(cam, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(&p, &crate::mesh::Mesh::default()))
 }
 
 /// Asserts that the device decides every edge of `mesh` as the CPU does.
