@@ -8,6 +8,9 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+/// Largest face budget anywhere ([`riverworld::adapt::MAX_MESH_FACES`]).
+const MAX_MESH_FACES: u64 = riverworld::adapt::MAX_MESH_FACES as u64;
+
 #[derive(Parser)]
 #[command(
     name = "riverworld",
@@ -72,10 +75,12 @@ enum Command {
         /// Repeatable: the cameras are visited in order and the last one is written.
         #[arg(long = "camera", required = true, allow_hyphen_values = true)]
         cameras: Vec<String>,
-        /// Face budget: coarser targets until the view fits. At least the base mesh's faces,
-        /// the coarsest view of the planet [default: no limit].
-        #[arg(long)]
-        max_faces: Option<usize>,
+        /// Face budget: coarser targets until the view fits (`lod_scale` in --stats says by how
+        /// much). At least the base mesh's faces, the coarsest view of the planet; at most 2^31.
+        /// The default keeps a mistaken camera (say land_px=0.5 at the ground) from filling
+        /// the memory: ~1.5 GB of mesh.
+        #[arg(long, default_value_t = 20_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
+        max_faces: u64,
         /// Output file.
         #[arg(long, default_value = "view.glb")]
         out: PathBuf,
@@ -97,8 +102,8 @@ enum Command {
         /// default: over the viewer's shoulder).
         #[arg(long, allow_hyphen_values = true)]
         camera: String,
-        /// Face budget of the adapted mesh; at least the base mesh's faces.
-        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+        /// Face budget of the adapted mesh; at least the base mesh's faces, at most 2^31.
+        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
         max_faces: u64,
         /// Image format [default: from the --out extension, else png].
         #[arg(long, value_parser = parse_format)]
@@ -170,8 +175,8 @@ struct ServeArgs {
     /// Allowed CORS origins: * or a comma-separated list.
     #[arg(long, default_value = "*")]
     cors_origin: String,
-    /// Largest max_faces a view.glb request may ask for.
-    #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    /// Largest max_faces a view.glb request may ask for (at most 2^31).
+    #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
     max_faces_cap: u64,
     /// Seconds before a request is answered 503 timeout.
     #[arg(long, default_value_t = 120, value_parser = clap::value_parser!(u64).range(1..))]
@@ -337,7 +342,7 @@ fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -
 fn run_view(
     planet: &PlanetArgs,
     cameras: &[String],
-    max_faces: Option<usize>,
+    max_faces: usize,
     out: &std::path::Path,
     stats: bool,
     backend: riverworld::adapt::gpu::Backend,
@@ -352,20 +357,15 @@ fn run_view(
             refuse_other_keys(&rest).map(|()| cam)
         })
         .collect::<Result<Vec<_>, String>>()?;
-    if max_faces == Some(0) {
-        return Err("--max-faces must be at least 1".into());
-    }
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    if let Some(max) = max_faces {
-        riverworld::adapt::check_budget(&built.mesh, max).map_err(|e| format!("--max-faces: {e}"))?;
-    }
+    riverworld::adapt::check_budget(&built.mesh, max_faces).map_err(|e| format!("--max-faces: {e}"))?;
     let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
     eprintln!("riverworld: {choice}");
     let on_gpu = gpu.is_some();
     let mut adapter = riverworld::adapt::Adapter::new(built.mesh, spec.params.clone()).with_gpu(gpu);
     let mut last = None;
     for cam in &cams {
-        last = Some(adapter.adapt(cam, max_faces));
+        last = Some(adapter.adapt(cam, Some(max_faces)));
     }
     if on_gpu && !adapter.on_gpu() {
         eprintln!("riverworld: the GPU failed during adaption; it finished on the CPU");
@@ -461,7 +461,7 @@ fn main() -> ExitCode {
             }
         }
         Command::View { planet, cameras, max_faces, out, stats, backend } => {
-            match run_view(&planet, &cameras, max_faces, &out, stats, backend) {
+            match run_view(&planet, &cameras, max_faces as usize, &out, stats, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");

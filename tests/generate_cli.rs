@@ -283,6 +283,9 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
         "--max-faces: 10 faces is below the",
     );
     assert!(!x.exists());
+    for budget in ["0", "3000000000"] {
+        refused(&["view", "--faces", "200", "--camera", cam, "--max-faces", budget], "--max-faces");
+    }
     // An output path that names no file.
     let up = format!("{}/..", dir.join("sub").display());
     refused(&["view", "--faces", "200", "--camera", cam, "--out", &up], "names no file");

@@ -51,6 +51,16 @@ pub fn terrain_top(params: &Params, base: &Mesh) -> f64 {
     allowed.max(highest) + HORIZON_MARGIN
 }
 
+/// Most faces an adapted mesh may have: its edges (1.5 per face) must stay within the `u32`
+/// index range, whose top values mark absent and removed entities. Adaption stops refining
+/// there, whatever the budget (`converged: false`).
+pub const MAX_MESH_FACES: usize = 1 << 31;
+
+/// The face cap of a run: its budget, never above [`MAX_MESH_FACES`].
+fn face_cap(budget: Option<usize>) -> usize {
+    budget.unwrap_or(MAX_MESH_FACES).min(MAX_MESH_FACES)
+}
+
 /// A face budget smaller than the base mesh, the coarsest mesh adaption can give (collapses
 /// never remove a base vertex).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -477,7 +487,7 @@ impl Adapter {
             }
         }
         self.forget_device_mesh();
-        self.run_on_cpu(view, cap, refine_only, wishes, stats)
+        self.run_on_cpu(view, Some(face_cap(cap)), refine_only, wishes, stats)
     }
 
     /// [`Adapter::run`] on the CPU.

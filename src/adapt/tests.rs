@@ -237,6 +237,15 @@ fn face_budget_is_respected_and_path_independent() {
 }
 
 #[test]
+fn no_run_may_outgrow_the_index_range() {
+    assert_eq!(face_cap(None), MAX_MESH_FACES);
+    assert_eq!(face_cap(Some(usize::MAX)), MAX_MESH_FACES);
+    assert_eq!(face_cap(Some(1000)), 1000);
+    // Edges, 1.5 per face, stay below the values that mark absent and removed entities.
+    assert!(MAX_MESH_FACES * 3 / 2 + compact::SLACK.1 < crate::mesh::NONE as usize - 1);
+}
+
+#[test]
 fn a_budget_below_the_base_mesh_is_refused() {
     let base_faces = base().mesh.faces.len();
     assert_eq!(check_budget(&base().mesh, base_faces), Ok(()));
