@@ -10,6 +10,18 @@ use std::process::ExitCode;
 
 /// Largest face budget anywhere ([`riverworld::adapt::MAX_MESH_FACES`]).
 const MAX_MESH_FACES: u64 = riverworld::adapt::MAX_MESH_FACES as u64;
+/// Default face budgets of `view` and `render`.
+const VIEW_FACES: usize = 20_000_000;
+const RENDER_FACES: usize = 1_000_000;
+
+/// The face budget for views of `base`: `--max-faces` if given (refused below the base mesh,
+/// as no view can be coarser), else `default` raised to the base mesh where that is larger.
+fn budget(base: &riverworld::mesh::Mesh, asked: Option<usize>, default: usize) -> Result<usize, String> {
+    match asked {
+        Some(n) => riverworld::adapt::check_budget(base, n).map(|()| n).map_err(|e| format!("--max-faces: {e}")),
+        None => Ok(default.max(base.faces.len())),
+    }
+}
 
 #[derive(Parser)]
 #[command(
@@ -77,10 +89,10 @@ enum Command {
         cameras: Vec<String>,
         /// Face budget: coarser targets until the view fits (`lod_scale` in --stats says by how
         /// much). At least the base mesh's faces, the coarsest view of the planet; at most 2^31.
-        /// The default keeps a mistaken camera (say land_px=0.5 at the ground) from filling
-        /// the memory: ~1.5 GB of mesh.
-        #[arg(long, default_value_t = 20_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
-        max_faces: u64,
+        /// [default: 20,000,000 (~1.5 GB of mesh, so that a mistaken camera such as land_px=0.5
+        /// at the ground cannot fill the memory), or the base mesh's faces where more]
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
+        max_faces: Option<u64>,
         /// Output file.
         #[arg(long, default_value = "view.glb")]
         out: PathBuf,
@@ -102,9 +114,10 @@ enum Command {
         /// default: over the viewer's shoulder).
         #[arg(long, allow_hyphen_values = true)]
         camera: String,
-        /// Face budget of the adapted mesh; at least the base mesh's faces, at most 2^31.
-        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
-        max_faces: u64,
+        /// Face budget of the adapted mesh; at least the base mesh's faces, at most 2^31
+        /// [default: 1,000,000, or the base mesh's faces where more].
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
+        max_faces: Option<u64>,
         /// Image format [default: from the --out extension, else png].
         #[arg(long, value_parser = parse_format)]
         format: Option<riverworld::render::ImageFormat>,
@@ -342,7 +355,7 @@ fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -
 fn run_view(
     planet: &PlanetArgs,
     cameras: &[String],
-    max_faces: usize,
+    max_faces: Option<usize>,
     out: &std::path::Path,
     stats: bool,
     backend: riverworld::adapt::gpu::Backend,
@@ -358,7 +371,7 @@ fn run_view(
         })
         .collect::<Result<Vec<_>, String>>()?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    riverworld::adapt::check_budget(&built.mesh, max_faces).map_err(|e| format!("--max-faces: {e}"))?;
+    let max_faces = budget(&built.mesh, max_faces, VIEW_FACES)?;
     let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
     eprintln!("riverworld: {choice}");
     let on_gpu = gpu.is_some();
@@ -394,7 +407,7 @@ fn refuse_other_keys(rest: &[(String, String)]) -> Result<(), String> {
 fn run_render(
     planet: &PlanetArgs,
     camera: &str,
-    max_faces: usize,
+    max_faces: Option<usize>,
     format: Option<riverworld::render::ImageFormat>,
     out: &std::path::Path,
     backend: riverworld::adapt::gpu::Backend,
@@ -410,7 +423,7 @@ fn run_render(
     });
     let renderer = render::shared().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    riverworld::adapt::check_budget(&built.mesh, max_faces).map_err(|e| format!("--max-faces: {e}"))?;
+    let max_faces = budget(&built.mesh, max_faces, RENDER_FACES)?;
     let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
     eprintln!("riverworld: {choice}");
     let pixels =
@@ -452,7 +465,7 @@ fn main() -> ExitCode {
             }
         },
         Command::Render { planet, camera, max_faces, format, out, backend } => {
-            match run_render(&planet, &camera, max_faces as usize, format, &out, backend) {
+            match run_render(&planet, &camera, max_faces.map(|n| n as usize), format, &out, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -461,7 +474,7 @@ fn main() -> ExitCode {
             }
         }
         Command::View { planet, cameras, max_faces, out, stats, backend } => {
-            match run_view(&planet, &cameras, max_faces as usize, &out, stats, backend) {
+            match run_view(&planet, &cameras, max_faces.map(|n| n as usize), &out, stats, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");

@@ -189,3 +189,26 @@ async fn configured_caps_bound_faces_raster_width_and_map_pixels() {
     assert!(err["message"].as_str().unwrap().contains("256x128"), "{err}");
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_planet_over_the_default_budget_is_viewed_whole_by_default() {
+    // A cap below the base mesh: views without max_faces give the base mesh (the coarsest view
+    // there is), views that ask for less are refused.
+    let s = start(Config { max_faces_cap: 100, ..config(&scratch("over-default")) }).await;
+    let id = ready_planet(&s, r#"{"seed": 5, "params": {"base_faces": 200}}"#).await;
+    let rec: serde_json::Value = s.get(&format!("/v1/planets/{id}")).await.json().await.unwrap();
+    let base_faces = rec["stats"]["faces"].as_u64().unwrap();
+    assert!(base_faces > 100, "{rec}");
+    let view = format!("/v1/planets/{id}/view.glb?eye=0,0,2e7&target=0,0,0&width=320&height=180");
+    let res = s.get(&view).await;
+    assert_eq!(res.status().as_u16(), 200);
+    let glb = res.bytes().await.unwrap();
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json: serde_json::Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    let indices = json["meshes"][0]["primitives"][0]["indices"].as_u64().unwrap() as usize;
+    assert_eq!(json["accessors"][indices]["count"].as_u64().unwrap(), 3 * base_faces);
+    let err = expect_error(s.get(&format!("{view}&max_faces=100")).await, 422, "invalid_parameter").await;
+    assert_eq!(err["field"], "max_faces");
+    assert!(err["message"].as_str().unwrap().contains(&format!("below the {base_faces} faces")), "{err}");
+    s.stop().await;
+}

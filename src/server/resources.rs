@@ -63,9 +63,15 @@ impl Resource {
 
 /// A parsed, validated query.
 enum Job {
-    View { cam: Camera, max_faces: usize },
+    /// `max_faces` as the query gave it (see [`view_budget`] for the default).
+    View {
+        cam: Camera,
+        max_faces: Option<usize>,
+    },
     Rivers,
-    Raster { width: u32 },
+    Raster {
+        width: u32,
+    },
 }
 
 pub fn unknown_key(key: &str, allowed: &str) -> ApiError {
@@ -79,14 +85,14 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
         Resource::View => {
             let (cam, rest) = Camera::parse_query(query, params.radius_m)
                 .map_err(|e| ApiError::unprocessable("invalid_camera", e.field, e.message))?;
-            let mut max_faces = DEFAULT_MAX_FACES.min(max_faces_cap);
+            let mut max_faces = None;
             for (k, v) in rest {
                 if k != "max_faces" {
                     return Err(unknown_key(&k, "eye, target, up, fov, width, height, land_px, water_px, max_faces"));
                 }
-                max_faces = whole_number_in("max_faces", &v, 1, max_faces_cap)?;
+                max_faces = Some(whole_number_in("max_faces", &v, 1, max_faces_cap)?);
             }
-            let norm = format!("{}&max_faces={max_faces}", cam.to_query());
+            let norm = budget_query(cam.to_query(), max_faces);
             Ok((Job::View { cam, max_faces }, norm))
         }
         Resource::Rivers => match pairs(query).next() {
@@ -110,11 +116,25 @@ fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
     query.split(['&', ';']).filter(|p| !p.is_empty()).map(|p| p.split_once('=').unwrap_or((p, "")))
 }
 
-/// Refuses a `max_faces` below the built planet's base mesh (422 naming `max_faces`): no view
-/// of it can be coarser.
-pub fn check_budget(planet: &Planet, max_faces: usize) -> Result<(), ApiError> {
-    crate::adapt::check_budget(&planet.mesh, max_faces)
-        .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string()))
+/// The normal form of a view's query: the camera's, then `max_faces` where the query gave it.
+pub fn budget_query(camera: String, max_faces: Option<usize>) -> String {
+    match max_faces {
+        Some(n) => format!("{camera}&max_faces={n}"),
+        None => camera,
+    }
+}
+
+/// The face budget of a view of `planet`: the query's `max_faces`, refused (422 naming
+/// `max_faces`) below the base mesh, as no view of the planet can be coarser; without one,
+/// [`DEFAULT_MAX_FACES`] within the server's `cap`, raised to the base mesh where that is
+/// larger (the view is then the base mesh).
+pub fn view_budget(planet: &Planet, asked: Option<usize>, cap: usize) -> Result<usize, ApiError> {
+    match asked {
+        Some(n) => crate::adapt::check_budget(&planet.mesh, n)
+            .map(|()| n)
+            .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string())),
+        None => Ok(DEFAULT_MAX_FACES.min(cap).max(planet.mesh.faces.len())),
+    }
 }
 
 /// Renders a resource from a built planet (blocking; runs off the async runtime).
@@ -124,13 +144,14 @@ fn render(
     planet: &Planet,
     params: &Params,
     gpu: Option<Arc<GpuAdaption>>,
+    cap: usize,
 ) -> Result<Vec<u8>, ApiError> {
     let mesh = &planet.mesh;
     Ok(match (res, job) {
         (_, Job::View { cam, max_faces }) => {
-            check_budget(planet, *max_faces)?;
+            let budget = view_budget(planet, *max_faces, cap)?;
             let mut adapter = Adapter::new(mesh.clone(), params.clone()).with_gpu(gpu);
-            adapter.adapt(cam, Some(*max_faces));
+            adapter.adapt(cam, Some(budget));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
             export::view::view_glb(adapter.mesh(), params, origin)
         }
@@ -183,8 +204,8 @@ pub async fn get(
     let params = entry.input.params.clone();
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
     let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
-    let gpu = state.adaption.clone();
-    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu)).await
+    let (gpu, cap) = (state.adaption.clone(), state.config.max_faces_cap);
+    cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu, cap)).await
 }
 
 /// One answer derived from a built planet: its route below the planet and normalised query

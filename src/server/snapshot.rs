@@ -8,7 +8,7 @@
 //! heavy-work permits.
 
 use super::error::ApiError;
-use super::resources::{cached, check_budget, unknown_key, whole_number_in, Derived, DEFAULT_MAX_FACES};
+use super::resources::{budget_query, cached, unknown_key, view_budget, whole_number_in, Derived};
 use super::state::AppState;
 use crate::render::{self, ImageFormat, RenderError, Shot};
 use axum::extract::{Path, RawQuery, State};
@@ -42,12 +42,12 @@ async fn snapshot(
     let (shot, rest) = Shot::parse_query(query.as_deref().unwrap_or(""), params.radius_m)
         .map_err(|e| ApiError::unprocessable("invalid_camera", e.field, e.message))?;
     let cap = state.config.max_faces_cap;
-    let mut max_faces = DEFAULT_MAX_FACES.min(cap);
+    let mut max_faces = None;
     for (k, v) in rest {
         if k != "max_faces" {
             return Err(unknown_key(&k, KEYS));
         }
-        max_faces = whole_number_in("max_faces", &v, 1, cap)?;
+        max_faces = Some(whole_number_in("max_faces", &v, 1, cap)?);
     }
     let pixels = shot.camera.width as u64 * shot.camera.height as u64;
     if pixels > state.config.max_render_pixels {
@@ -68,14 +68,14 @@ async fn snapshot(
         ImageFormat::Png => "render.png",
         ImageFormat::Jpeg => "render.jpg",
     };
-    let norm = format!("{}&max_faces={max_faces}", shot.to_query());
+    let norm = budget_query(shot.to_query(), max_faces);
     let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
     let gpu = state.adaption.clone();
     cached(state, entry, derived, h, move |planet| {
-        check_budget(&planet, max_faces)?;
+        let budget = view_budget(&planet, max_faces, cap)?;
         let cam = &shot.camera;
         let rgba =
-            render::snapshot(renderer, &planet.mesh, &params, &shot, max_faces, gpu).map_err(|e| unavailable(&e))?;
+            render::snapshot(renderer, &planet.mesh, &params, &shot, budget, gpu).map_err(|e| unavailable(&e))?;
         Ok(render::encode(&rgba, cam.width, cam.height, format))
     })
     .await
