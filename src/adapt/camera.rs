@@ -302,7 +302,10 @@ impl View {
             planes,
             per_unit,
             c_land: cam.land_px / ppr,
-            c_water: cam.water_px / ppr,
+            // Never finer on the sea than on land: the sea edges a coast split makes are judged
+            // by `c_water`, their parent by `c_land`, and a child may not want a split that its
+            // parent did not (the mesh would depend on the path).
+            c_water: cam.water_px.max(cam.land_px) / ppr,
             eye_dir: cam.eye / d_eye,
             horizon: horizon_plane,
             min_len: min_len.max(0.0),

@@ -100,6 +100,25 @@ fn same_mesh_whatever_the_path() {
 }
 
 #[test]
+fn a_sea_finer_than_the_land_keeps_the_mesh_path_independent() {
+    // water_px below land_px: the sea edges that coast splits make must not want splits their
+    // parents did not, or a coast refined for a near camera stays refined for a far one.
+    let m = &base().mesh;
+    let coast = (0..m.edges.len() as u32).find(|&e| m.edges[e as usize].kind == EdgeKind::Coast).unwrap();
+    let v = m.edges[coast as usize].v[0];
+    let with_water = |cam: Camera, water_px: f64| Camera { water_px, ..cam };
+    let near = with_water(camera_over(m, v, 3_000.0, 10_000.0), 0.5);
+    let far = with_water(camera_over(m, v, 60_000.0, 120_000.0), 0.5);
+    let (direct, s1) = adapted(std::slice::from_ref(&far));
+    let (via_near, s2) = adapted(&[near, far.clone()]);
+    assert!(s1.converged && s2.converged && s2.collapses > 0, "{s2:?}");
+    assert!(canonical(&direct) == canonical(&via_near), "the mesh depends on the path");
+    // The sea is then as fine as the land.
+    let (same, _) = adapted(&[with_water(far, 3.0)]);
+    assert!(canonical(&direct) == canonical(&same));
+}
+
+#[test]
 fn a_vertex_is_the_same_at_every_level_of_detail() {
     let near = camera(-5.0, 30.0, 20_000.0, 60_000.0, 3.0);
     let far = camera(-5.0, 30.0, 2_000_000.0, 2_000_000.0, 3.0);
@@ -159,7 +178,15 @@ fn slopes_over_s_g(m: &Mesh, p: &Params) -> (usize, usize, f64) {
     for (i, e) in m.edges.iter().enumerate() {
         let [a, b] = e.v.map(|v| &m.vertices[v as usize]);
         if e.kind == EdgeKind::River {
-            assert!(!a.flags.contains(VertexFlags::MOUNTAIN) && !b.flags.contains(VertexFlags::MOUNTAIN), "edge {i}");
+            // Both ends belong to the river: river vertices (or its mouth) with water over the
+            // ground, never a mountain or a plain land vertex.
+            for v in [a, b] {
+                let river = VertexFlags(VertexFlags::RIVER.0 | VertexFlags::MOUTH.0);
+                assert!(
+                    v.flags.intersects(river) && !v.flags.contains(VertexFlags::MOUNTAIN) && v.water >= v.ground,
+                    "river edge {i} ends at {v:?}"
+                );
+            }
         }
         let dry =
             |v: &crate::mesh::Vertex| !v.flags.contains(VertexFlags::RIVER) && !v.submerged() && v.flags.is_inland();
@@ -397,6 +424,7 @@ mod paths {
             let (direct, s2) = adapted(std::slice::from_ref(&last));
             prop_assert!(s1.converged && s2.converged);
             prop_assert!(canonical(&via) == canonical(&direct));
+            same_buffers(via, direct)?;
         }
     }
 
@@ -419,7 +447,19 @@ mod paths {
             prop_assert_eq!(s1.lod_scale, s2.lod_scale);
             prop_assert!(max.is_none_or(|m| s1.faces <= m));
             prop_assert!(canonical(via.mesh()) == canonical(direct.mesh()));
+            same_buffers(via.into_mesh(), direct.into_mesh())?;
         }
+    }
+
+    /// Beyond the triangles and altitudes, every field of every vertex, edge and face (seeds,
+    /// tangents, kinds, levels, level-of-detail bounds) is the same: put in spatial order, a
+    /// function of the mesh alone, the buffers are equal. And the terrain holds.
+    fn same_buffers(mut a: Mesh, mut b: Mesh) -> Result<(), TestCaseError> {
+        a.compact_in_spatial_order();
+        b.compact_in_spatial_order();
+        prop_assert!(a == b, "the buffers differ beyond the triangles and altitudes");
+        check_rivers(&a);
+        Ok(())
     }
 }
 

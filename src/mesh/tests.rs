@@ -220,3 +220,28 @@ fn a_face_kind_is_kept_by_its_three_edges() {
     let err = m.validate().unwrap_err();
     assert!(err.contains("land bits 0b100"), "{err}");
 }
+
+#[test]
+fn validation_finds_split_levels_out_of_order_pieces_and_twin_edges() {
+    let m = sphere(200);
+    m.validate().unwrap();
+    // The refinement edge of a higher split level than the other two.
+    let mut bad = m.clone();
+    let [e0, e1, _] = bad.faces[0].e;
+    bad.edges[e0 as usize].level = bad.edges[e1 as usize].level + 1;
+    assert!(bad.validate().unwrap_err().contains("split levels"));
+    // Two spheres side by side: every count is right but the mesh is in two pieces.
+    let mut two = m.clone();
+    let (nv, ne, nf) = (m.vertices.len() as u32, m.edges.len() as u32, m.faces.len() as u32);
+    two.vertices.extend(m.vertices.iter().map(|v| Vertex { edge: v.edge + ne, ..*v }));
+    two.edges.extend(m.edges.iter().map(|e| Edge { v: e.v.map(|v| v + nv), f: e.f.map(|f| f + nf), ..*e }));
+    two.faces.extend(m.faces.iter().map(|f| Face { e: f.e.map(|e| e + ne) }));
+    let err = two.validate().unwrap_err();
+    assert!(err.contains("in pieces"), "{err}");
+    // Two edges joining the same vertices.
+    let mut twice = m.clone();
+    let [a, b] = twice.edges[0].v;
+    twice.edges[1].v = [a, b];
+    let err = twice.validate().unwrap_err();
+    assert!(err.contains("does not join") || err.contains("both join"), "{err}");
+}

@@ -10,7 +10,7 @@ impl Mesh {
         let nv = self.vertices.len() as u32;
         let ne = self.edges.len() as u32;
         let nf = self.faces.len() as u32;
-        let mut uses = vec![0u8; ne as usize];
+        let mut uses = vec![0u32; ne as usize];
         for (fi, f) in self.faces.iter().enumerate() {
             let fi = fi as u32;
             if f.e.iter().any(|&e| e >= ne) {
@@ -43,9 +43,19 @@ impl Mesh {
                 }
                 uses[f.e[i] as usize] += 1;
             }
+            // Newest-vertex bisection: the two edges at the newest corner were made by the same
+            // split (or both belong to the base shape), and the refinement edge is never of a
+            // higher split level than they are.
+            let [l0, l1, l2] = f.e.map(|e| self.edges[e as usize].level);
+            if l1 != l2 || l0 > l1 {
+                return Err(format!("face {fi} has edges of split levels {l0}, {l1}, {l2}"));
+            }
             let n = self.face_area_vector(fi);
             let centre = (self.pos(v[0]) + self.pos(v[1]) + self.pos(v[2])) / 3.0;
-            if n.length() <= 0.0 || !n.is_finite() {
+            // Degenerate: no area, or a sliver whose area is a vanishing part of its longest
+            // side's square (a well-shaped triangle has about a quarter).
+            let longest = (0..3).map(|i| self.pos(v[i]).distance_squared(self.pos(v[(i + 1) % 3]))).fold(0.0, f64::max);
+            if !n.is_finite() || !longest.is_finite() || n.length() <= 1e-9 * longest {
                 return Err(format!("face {fi} is degenerate"));
             }
             if n.dot(centre) <= 0.0 {
@@ -73,10 +83,73 @@ impl Mesh {
                 return Err(format!("vertex {vi} has a non-finite position or altitude"));
             }
         }
+        self.check_edges_distinct()?;
+        self.check_vertex_fans()?;
         let euler = nv as i64 - ne as i64 + nf as i64;
         if euler != 2 {
             return Err(format!("Euler characteristic is {euler}, not 2 (V={nv}, E={ne}, F={nf})"));
         }
         Ok(())
+    }
+}
+
+impl Mesh {
+    /// No two edges join the same two vertices.
+    fn check_edges_distinct(&self) -> Result<(), String> {
+        let mut ends: Vec<(u32, u32, usize)> =
+            self.edges.iter().enumerate().map(|(i, e)| (e.v[0].min(e.v[1]), e.v[0].max(e.v[1]), i)).collect();
+        ends.sort_unstable();
+        match ends.windows(2).find(|w| (w[0].0, w[0].1) == (w[1].0, w[1].1)) {
+            Some(w) => Err(format!("edges {} and {} both join vertices {} and {}", w[0].2, w[1].2, w[0].0, w[0].1)),
+            None => Ok(()),
+        }
+    }
+
+    /// Around every vertex its faces form one fan: walking from face to face across the edges
+    /// at the vertex comes back to the start after visiting every edge that touches it (no
+    /// pinched vertex joining two sheets). And every vertex can be reached from vertex 0 (one
+    /// piece). With the Euler characteristic, the surface is a sphere.
+    fn check_vertex_fans(&self) -> Result<(), String> {
+        let mut degree = vec![0u32; self.vertices.len()];
+        for e in &self.edges {
+            for v in e.v {
+                degree[v as usize] += 1;
+            }
+        }
+        for (vi, vert) in self.vertices.iter().enumerate() {
+            let vi = vi as u32;
+            let start = vert.edge;
+            let (mut e, mut steps) = (start, 0u32);
+            loop {
+                // The face on the left of `e` as it leaves `vi`, then that face's other edge at `vi`.
+                let edge = &self.edges[e as usize];
+                let f = if edge.v[0] == vi { edge.f[0] } else { edge.f[1] };
+                let next =
+                    self.faces[f as usize].e.into_iter().find(|&x| x != e && self.edges[x as usize].v.contains(&vi));
+                e = next.ok_or_else(|| format!("face {f} has one edge at vertex {vi}"))?;
+                steps += 1;
+                if e == start || steps > degree[vi as usize] {
+                    break;
+                }
+            }
+            if e != start || steps != degree[vi as usize] {
+                return Err(format!(
+                    "the faces around vertex {vi} do not form one fan of its {} edges",
+                    degree[vi as usize]
+                ));
+            }
+        }
+        let mut seen = vec![false; self.vertices.len()];
+        let mut stack = vec![0u32];
+        let adj = self.adjacency();
+        while let Some(v) = stack.pop() {
+            if !std::mem::replace(&mut seen[v as usize], true) {
+                stack.extend(adj.around(v).map(|(w, _)| w).filter(|&w| !seen[w as usize]));
+            }
+        }
+        match seen.iter().position(|&s| !s) {
+            Some(v) => Err(format!("vertex {v} cannot be reached from vertex 0: the mesh is in pieces")),
+            None => Ok(()),
+        }
     }
 }
