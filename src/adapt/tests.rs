@@ -122,7 +122,7 @@ fn a_sea_finer_than_the_land_keeps_the_mesh_path_independent() {
 fn a_vertex_is_the_same_at_every_level_of_detail() {
     let near = camera(-5.0, 30.0, 20_000.0, 60_000.0, 3.0);
     let far = camera(-5.0, 30.0, 2_000_000.0, 2_000_000.0, 3.0);
-    let (m1, _) = adapted(&[near]);
+    let (m1, _) = adapted(std::slice::from_ref(&near));
     let (m2, _) = adapted(&[far]);
     // A vertex of the coarse mesh is the same vertex as a fine one within a metre of it (no two
     // vertices of these meshes are that close); matched so, a vertex whose position drifted
@@ -142,6 +142,17 @@ fn a_vertex_is_the_same_at_every_level_of_detail() {
         }
     }
     assert!(shared > base().mesh.vertices.len() + 1000, "only {shared} shared vertices");
+    // Near the close camera's target its mesh is the finer one, so every coarse vertex there
+    // has its twin in it: a vertex that moved by more than a metre would go unmatched.
+    let (f, _, _) = near.basis();
+    let around = |v: &&crate::mesh::Vertex| {
+        let rel = v.p() - near.eye;
+        v.p().distance(near.target) < 150_000.0 && rel.normalize().dot(f) > 20f64.to_radians().cos()
+    };
+    let coarse_near: Vec<_> = m2.vertices.iter().filter(around).collect();
+    let matched =
+        coarse_near.iter().filter(|v| fine.iter().any(|w| w.p().distance(v.p()) < 1.0 && bits(w) == bits(v))).count();
+    assert!(coarse_near.len() > 10 && matched == coarse_near.len(), "{matched} of {}", coarse_near.len());
 }
 
 /// Rivers descend to a mouth, are never interrupted by mountains, riverbeds lie below their
@@ -387,6 +398,12 @@ fn adaption_reaches_the_minimum_edge_length_at_earth_radius() {
     let fine = lengths.iter().filter(|&&l| l < 2.0 * min).count();
     let shortest = lengths.iter().copied().fold(f64::MAX, f64::min);
     assert!(fine > 20 && shortest > 0.1 * min, "{fine} edges under 2 cm, the shortest {shortest} m");
+    // And nothing under the minimum was split: a split wanted for itself needs an edge (its
+    // bound, which the new vertex keeps for the collapse) of 2 cm; one forced by a neighbour's
+    // (conformity) is of a lower split level, here just under 1 cm at the least.
+    let split_from = m.vertices.iter().filter(|v| v.flags.contains(VertexFlags::REFINED)).map(|v| v.parent_lod.len());
+    let least = split_from.fold(f32::MAX, f32::min) as f64;
+    assert!((0.9 * min..2.5 * min).contains(&least), "an edge of {least} m was split");
     let mut keys: Vec<[u64; 3]> = m.vertices.iter().map(|v| v.pos.map(f64::to_bits)).collect();
     keys.sort_unstable();
     keys.dedup();
