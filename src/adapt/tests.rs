@@ -524,3 +524,29 @@ fn centimetre_edges_at_earth_radius() {
     keys.dedup();
     assert_eq!(keys.len(), m.vertices.len());
 }
+
+#[test]
+fn the_split_list_is_sorted_ready_and_serves_every_wish() {
+    // A mesh of many split levels, and wishes scattered over it (some blocked behind chains).
+    let (m, _) = adapted(&[camera(10.0, 20.0, 100_000.0, 300_000.0, 2.0)]);
+    let mut rng = crate::rng::Sequence::new(7, 7);
+    let wants: Vec<bool> = (0..m.edges.len()).map(|_| rng.unit() < 0.05).collect();
+    let mut selection = split::Selection::default();
+    let ready = selection.select(&m, &wants);
+    assert!(ready.windows(2).all(|w| w[0] < w[1]), "not sorted or repeated");
+    // Each is the refinement edge of both its faces.
+    assert!(ready.iter().all(|&e| m.blocking_edge(e) == e));
+    // Each wish is ready itself or blocked by a chain that ends at a selected edge.
+    let mut blocked = 0;
+    for w in (0..m.edges.len() as u32).filter(|&e| wants[e as usize]) {
+        let mut e = w;
+        while m.blocking_edge(e) != e {
+            e = m.blocking_edge(e);
+        }
+        blocked += usize::from(e != w);
+        assert!(ready.binary_search(&e).is_ok(), "wish {w} ends at {e}, not selected");
+    }
+    assert!(blocked > 100, "only {blocked} wishes were blocked");
+    // Selected again (the flags kept between passes are cleared), the same list.
+    assert_eq!(selection.select(&m, &wants), ready);
+}
