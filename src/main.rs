@@ -57,7 +57,8 @@ struct PlanetArgs {
     /// JSON file {"seed": N, "params": {...}} with the planet parameters (paper Table 2).
     #[arg(long)]
     params: Option<PathBuf>,
-    /// Faces of the base shape (overrides params.base_faces). A map adds detail inside its bounds.
+    /// Faces of the base shape (overrides params.base_faces). A map adds detail inside its bounds,
+    /// and the mountain vertices between rivers add more: stats.json gives the base mesh's faces.
     #[arg(long)]
     faces: Option<u32>,
 }
