@@ -89,7 +89,7 @@ enum Command {
         #[arg(long = "camera", required = true, allow_hyphen_values = true)]
         cameras: Vec<String>,
         /// Face budget: coarser targets until the view fits (`lod_scale` in --stats says by how
-        /// much). At least the base mesh's faces, the coarsest view of the planet; at most 2^31.
+        /// much). At least the base mesh's faces, the coarsest view of the planet; at most 2^30.
         /// [default: 20,000,000 (~1.5 GB of mesh, so that a mistaken camera such as land_px=0.5
         /// at the ground cannot fill the memory), or the base mesh's faces where more]
         #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
@@ -115,7 +115,7 @@ enum Command {
         /// default: over the viewer's shoulder).
         #[arg(long, allow_hyphen_values = true)]
         camera: String,
-        /// Face budget of the adapted mesh; at least the base mesh's faces, at most 2^31
+        /// Face budget of the adapted mesh; at least the base mesh's faces, at most 2^30
         /// [default: 1,000,000, or the base mesh's faces where more].
         #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
         max_faces: Option<u64>,
@@ -189,7 +189,7 @@ struct ServeArgs {
     /// Allowed CORS origins: * or a comma-separated list.
     #[arg(long, default_value = "*")]
     cors_origin: String,
-    /// Largest max_faces a view.glb request may ask for (at most 2^31).
+    /// Largest max_faces a view.glb request may ask for (at most 2^30).
     #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
     max_faces_cap: u64,
     /// Seconds before a request is answered 503 timeout.
@@ -434,7 +434,7 @@ fn run_render(
         .map_err(|e| e.to_string())
 }
 
-/// The file name that `--out` ends in (it may not end in `..` or a separator).
+/// The file name that `--out` ends in (refused where it names none: `..`, `/`).
 fn out_file_name(out: &std::path::Path) -> Result<&str, String> {
     match out.file_name() {
         Some(n) => n.to_str().ok_or_else(|| format!("--out {}: the file name is not UTF-8", out.display())),

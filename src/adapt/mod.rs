@@ -51,10 +51,11 @@ pub fn terrain_top(params: &Params, base: &Mesh) -> f64 {
     allowed.max(highest) + HORIZON_MARGIN
 }
 
-/// Most faces an adapted mesh may have: its edges (1.5 per face) must stay within the `u32`
-/// index range, whose top values mark absent and removed entities. Adaption stops refining
-/// there, whatever the budget (`converged: false`).
-pub const MAX_MESH_FACES: usize = 1 << 31;
+/// Most faces an adapted mesh may have before adaption stops refining, whatever the budget
+/// (`converged: false`). The cap is checked before each pass, and one pass at most doubles the
+/// faces, with dead slots of collapses (up to a quarter) besides: the edges (1.5 per face) then
+/// stay within the `u32` index range, whose top values mark absent and removed entities.
+pub const MAX_MESH_FACES: usize = 1 << 30;
 
 /// The face cap of a run: its budget, never above [`MAX_MESH_FACES`].
 fn face_cap(budget: Option<usize>) -> usize {
@@ -361,8 +362,13 @@ impl Adapter {
             } else {
                 over = k;
                 if k >= MAX_STEP {
-                    // Not even the coarsest target fits (a budget below the base mesh).
+                    // Not even the coarsest target fits: a budget below the base mesh, or a
+                    // camera so close to the ground that even 1.25^130 coarser targets want
+                    // splits there. The base mesh is the coarsest mesh there is.
                     stats.converged = false;
+                    if self.base.faces.len() <= max {
+                        self.set_mesh(self.base.clone());
+                    }
                     break;
                 }
                 if fits.as_ref().is_some_and(|f| f.step == over + 1) {

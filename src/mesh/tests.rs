@@ -236,12 +236,17 @@ fn validation_finds_split_levels_out_of_order_pieces_and_twin_edges() {
     two.vertices.extend(m.vertices.iter().map(|v| Vertex { edge: v.edge + ne, ..*v }));
     two.edges.extend(m.edges.iter().map(|e| Edge { v: e.v.map(|v| v + nv), f: e.f.map(|f| f + nf), ..*e }));
     two.faces.extend(m.faces.iter().map(|f| Face { e: f.e.map(|e| e + ne) }));
-    let err = two.validate().unwrap_err();
+    assert!(two.validate().unwrap_err().contains("Euler characteristic is 4"));
+    // (The Euler count alone would pass a sphere beside a torus: the walk finds the pieces.)
+    let err = two.check_vertex_fans().unwrap_err();
     assert!(err.contains("in pieces"), "{err}");
-    // Two edges joining the same vertices.
+    // Two edges joining the same vertices (the faces would disagree first in a whole mesh).
     let mut twice = m.clone();
     let [a, b] = twice.edges[0].v;
-    twice.edges[1].v = [a, b];
-    let err = twice.validate().unwrap_err();
-    assert!(err.contains("does not join") || err.contains("both join"), "{err}");
+    twice.edges[1].v = [b, a];
+    let err = twice.check_edges_distinct().unwrap_err();
+    assert!(err.contains("edges 0 and 1 both join"), "{err}");
+    m.check_edges_distinct().unwrap();
+    // An empty mesh is refused, not a panic.
+    assert!(Mesh::default().validate().unwrap_err().contains("Euler"));
 }

@@ -83,19 +83,18 @@ impl Mesh {
                 return Err(format!("vertex {vi} has a non-finite position or altitude"));
             }
         }
-        self.check_edges_distinct()?;
-        self.check_vertex_fans()?;
         let euler = nv as i64 - ne as i64 + nf as i64;
         if euler != 2 {
             return Err(format!("Euler characteristic is {euler}, not 2 (V={nv}, E={ne}, F={nf})"));
         }
-        Ok(())
+        self.check_edges_distinct()?;
+        self.check_vertex_fans()
     }
 }
 
 impl Mesh {
     /// No two edges join the same two vertices.
-    fn check_edges_distinct(&self) -> Result<(), String> {
+    pub(super) fn check_edges_distinct(&self) -> Result<(), String> {
         let mut ends: Vec<(u32, u32, usize)> =
             self.edges.iter().enumerate().map(|(i, e)| (e.v[0].min(e.v[1]), e.v[0].max(e.v[1]), i)).collect();
         ends.sort_unstable();
@@ -109,7 +108,7 @@ impl Mesh {
     /// at the vertex comes back to the start after visiting every edge that touches it (no
     /// pinched vertex joining two sheets). And every vertex can be reached from vertex 0 (one
     /// piece). With the Euler characteristic, the surface is a sphere.
-    fn check_vertex_fans(&self) -> Result<(), String> {
+    pub(super) fn check_vertex_fans(&self) -> Result<(), String> {
         let mut degree = vec![0u32; self.vertices.len()];
         for e in &self.edges {
             for v in e.v {

@@ -92,7 +92,7 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
                 }
                 max_faces = Some(whole_number_in("max_faces", &v, 1, max_faces_cap)?);
             }
-            let norm = budget_query(cam.to_query(), max_faces);
+            let norm = budget_query(cam.to_query(), max_faces, max_faces_cap);
             Ok((Job::View { cam, max_faces }, norm))
         }
         Resource::Rivers => match pairs(query).next() {
@@ -116,11 +116,13 @@ fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
     query.split(['&', ';']).filter(|p| !p.is_empty()).map(|p| p.split_once('=').unwrap_or((p, "")))
 }
 
-/// The normal form of a view's query: the camera's, then `max_faces` where the query gave it.
-pub fn budget_query(camera: String, max_faces: Option<usize>) -> String {
+/// The normal form of a view's query: the camera's, then `max_faces` as the query gave it or,
+/// without one, the default within the server's `cap` (which [`view_budget`] may raise to the
+/// base mesh: a function of the planet id, which the cache key holds too).
+pub fn budget_query(camera: String, max_faces: Option<usize>, cap: usize) -> String {
     match max_faces {
         Some(n) => format!("{camera}&max_faces={n}"),
-        None => camera,
+        None => format!("{camera}&max_faces=default:{}", DEFAULT_MAX_FACES.min(cap)),
     }
 }
 
@@ -164,10 +166,17 @@ fn render(
     })
 }
 
-/// Strong validator of one answer: the software version, id, route and normalised query.
+/// Revision of what the derived answers hold, for the same id, route and query: raised whenever
+/// a change to the software changes their bytes (here: eq. 6 per side of the frustum, the
+/// horizon's height, the sea never finer than the land), so that caches holding the old bytes
+/// under a strong, immutable `ETag` see a new one.
+const ANSWERS_REVISION: &str = "2";
+
+/// Strong validator of one answer: the software version and answers' revision, id, route and
+/// normalised query.
 fn etag(id: &str, route: &str, norm: &str) -> String {
     let mut h = Sha256::new();
-    for part in [env!("CARGO_PKG_VERSION"), id, route, norm] {
+    for part in [env!("CARGO_PKG_VERSION"), ANSWERS_REVISION, id, route, norm] {
         h.update(part.as_bytes());
         h.update([0]);
     }
@@ -325,5 +334,21 @@ where
             name,
             format!("must be a whole number in {lo}..={hi}, got {v:?}"),
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::budget_query;
+
+    #[test]
+    fn the_cache_key_holds_the_budget_the_answer_is_made_with() {
+        assert_eq!(budget_query("eye=1,2,3".into(), Some(7), 100), "eye=1,2,3&max_faces=7");
+        // Without max_faces the default depends on the server's cap: servers with other caps
+        // make other answers, under other keys and ETags.
+        assert_eq!(budget_query("eye=1,2,3".into(), None, 1000), "eye=1,2,3&max_faces=default:1000");
+        assert_ne!(budget_query("q".into(), None, 1000), budget_query("q".into(), None, 2000));
+        assert_eq!(budget_query("q".into(), None, 2_000_000), budget_query("q".into(), None, 600_000));
+        assert_ne!(budget_query("q".into(), None, 1000), budget_query("q".into(), Some(1000), 1000));
     }
 }

@@ -68,7 +68,7 @@ async fn snapshot(
         ImageFormat::Png => "render.png",
         ImageFormat::Jpeg => "render.jpg",
     };
-    let norm = budget_query(shot.to_query(), max_faces);
+    let norm = budget_query(shot.to_query(), max_faces, cap);
     let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
     let gpu = state.adaption.clone();
     cached(state, entry, derived, h, move |planet| {
