@@ -14,13 +14,9 @@ const MAX_MESH_FACES: u64 = riverworld::adapt::MAX_MESH_FACES as u64;
 const VIEW_FACES: usize = 20_000_000;
 const RENDER_FACES: usize = 1_000_000;
 
-/// The face budget for views of `base`: `--max-faces` if given (refused below the base mesh,
-/// as no view can be coarser), else `default` raised to the base mesh where that is larger.
+/// [`riverworld::adapt::face_budget`], its refusal naming `--max-faces`.
 fn budget(base: &riverworld::mesh::Mesh, asked: Option<usize>, default: usize) -> Result<usize, String> {
-    match asked {
-        Some(n) => riverworld::adapt::check_budget(base, n).map(|()| n).map_err(|e| format!("--max-faces: {e}")),
-        None => Ok(default.max(base.faces.len())),
-    }
+    riverworld::adapt::face_budget(base, asked, default).map_err(|e| format!("--max-faces: {e}"))
 }
 
 #[derive(Parser)]

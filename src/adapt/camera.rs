@@ -355,6 +355,13 @@ mod tests {
     /// Highest terrain of the default parameters, horizon margin included.
     const TOP: f64 = 20_000.0;
 
+    /// The camera of `query` and its view (1 cm minimum edge length).
+    fn camera_and_view(query: &str) -> (Camera, View) {
+        let cam = Camera::parse_query(query, R).unwrap().0;
+        let view = View::new(&cam, R, 0.01, TOP);
+        (cam, view)
+    }
+
     #[test]
     fn parses_a_query_with_defaults() {
         let (c, rest) = Camera::parse_query("eye=0,0,2e7&target=0,0,0&max_faces=10", R).unwrap();
@@ -430,8 +437,7 @@ mod tests {
             ("eye=6.4e6,0,0&target=0,0,0&fov=2&width=8192&height=1", 1e12),
             ("eye=6.4e6,0,0&target=0,0,0&fov=170&width=1&height=4000", 1e9),
         ] {
-            let cam = Camera::parse_query(query, R).unwrap().0;
-            nested_balls_agree(&View::new(&cam, R, 0.01, TOP), far);
+            nested_balls_agree(&camera_and_view(query).1, far);
         }
     }
 
@@ -459,8 +465,7 @@ mod tests {
 
     #[test]
     fn frustum_planes_point_inwards() {
-        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0&fov=40&width=800&height=400", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (cam, view) = camera_and_view("eye=7e6,0,0&target=0,0,0&fov=40&width=800&height=400");
         let (f, r, u) = cam.basis();
         for n in &view.planes {
             assert!(n.dot(f) > 0.0);
@@ -481,8 +486,7 @@ mod tests {
     /// over the tangent of the half field of view); inside, the plain `l/d > c`.
     #[test]
     fn outside_the_frustum_distance_grows_by_eq_6() {
-        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=60", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (cam, view) = camera_and_view("eye=0,0,2e7&target=0,0,0&fov=60");
         let (f, _, u) = cam.basis();
         let dist = 1.0e7;
         let mut last = 0.0;
@@ -521,8 +525,7 @@ mod tests {
     /// space's x), above and below in the vertical one.
     #[test]
     fn each_side_counts_in_its_own_half_field_of_view() {
-        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=60&width=1920&height=1080", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (cam, view) = camera_and_view("eye=0,0,2e7&target=0,0,0&fov=60&width=1920&height=1080");
         let (f, r, u) = cam.basis();
         let tan_v = 30f64.to_radians().tan();
         let tan_h = tan_v * 1920.0 / 1080.0;
@@ -545,8 +548,7 @@ mod tests {
     /// alone asked 40 times less right behind it), and right behind, longer.
     #[test]
     fn behind_the_eye_is_as_coarse_as_beside_it() {
-        let cam = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=10", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (cam, view) = camera_and_view("eye=0,0,2e7&target=0,0,0&fov=10");
         let (f, _, u) = cam.basis();
         let dist = 1.0e6;
         let factor = |deg: f64| {
@@ -571,8 +573,7 @@ mod tests {
     #[test]
     fn the_horizon_of_a_far_eye_keeps_the_limb() {
         let d = 1.0e8;
-        let cam = Camera::parse_query(&format!("eye={d},0,0&target=0,0,0"), R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (_, view) = camera_and_view(&format!("eye={d},0,0&target=0,0,0"));
         let beyond = (R / d).acos() + (R / (R + TOP)).acos();
         assert!(beyond > std::f64::consts::FRAC_PI_2);
         let at = |angle: f64, height: f64| DVec3::new(angle.cos(), angle.sin(), 0.0) * (R + height);
@@ -585,8 +586,7 @@ mod tests {
 
     #[test]
     fn nearer_and_longer_edges_split_first() {
-        let cam = Camera::parse_query("eye=7e6,0,0&target=0,0,0", R).unwrap().0;
-        let view = View::new(&cam, R, 0.01, TOP);
+        let (_, view) = camera_and_view("eye=7e6,0,0&target=0,0,0");
         let near = DVec3::new(R, 0.0, 0.0);
         assert!(view.wants_split(100_000.0, near, 0.0, false));
         assert!(!view.wants_split(100.0, near, 0.0, false));

@@ -90,6 +90,16 @@ pub fn check_budget(base: &Mesh, max_faces: usize) -> Result<(), BudgetBelowBase
     }
 }
 
+/// The face budget for views of `base`: the one `asked` for, refused below the base mesh (no
+/// view can be coarser), else `default` raised to the base mesh where that is larger (the view
+/// is then the base mesh).
+pub fn face_budget(base: &Mesh, asked: Option<usize>, default: usize) -> Result<usize, BudgetBelowBase> {
+    match asked {
+        Some(n) => check_budget(base, n).map(|()| n),
+        None => Ok(default.max(base.faces.len())),
+    }
+}
+
 /// What one adaption did (`riverworld view --stats`). Splits, collapses and passes count all
 /// the work done: with a face budget, that includes the trials of the search for the scale
 /// that fits (see [`Adapter::fit_budget`]), whose meshes are thrown away.

@@ -109,16 +109,11 @@ impl Mesh {
     /// pinched vertex joining two sheets). And every vertex can be reached from vertex 0 (one
     /// piece). With the Euler characteristic, the surface is a sphere.
     pub(super) fn check_vertex_fans(&self) -> Result<(), String> {
-        let mut degree = vec![0u32; self.vertices.len()];
-        for e in &self.edges {
-            for v in e.v {
-                degree[v as usize] += 1;
-            }
-        }
+        let adj = self.adjacency();
         for (vi, vert) in self.vertices.iter().enumerate() {
             let vi = vi as u32;
             let start = vert.edge;
-            let (mut e, mut steps) = (start, 0u32);
+            let (mut e, mut steps, degree) = (start, 0, adj.degree(vi));
             loop {
                 // The face on the left of `e` as it leaves `vi`, then that face's other edge at `vi`.
                 let edge = &self.edges[e as usize];
@@ -127,20 +122,16 @@ impl Mesh {
                     self.faces[f as usize].e.into_iter().find(|&x| x != e && self.edges[x as usize].v.contains(&vi));
                 e = next.ok_or_else(|| format!("face {f} has one edge at vertex {vi}"))?;
                 steps += 1;
-                if e == start || steps > degree[vi as usize] {
+                if e == start || steps > degree {
                     break;
                 }
             }
-            if e != start || steps != degree[vi as usize] {
-                return Err(format!(
-                    "the faces around vertex {vi} do not form one fan of its {} edges",
-                    degree[vi as usize]
-                ));
+            if e != start || steps != degree {
+                return Err(format!("the faces around vertex {vi} do not form one fan of its {degree} edges"));
             }
         }
         let mut seen = vec![false; self.vertices.len()];
         let mut stack = vec![0u32];
-        let adj = self.adjacency();
         while let Some(v) = stack.pop() {
             if !std::mem::replace(&mut seen[v as usize], true) {
                 stack.extend(adj.around(v).map(|(w, _)| w).filter(|&w| !seen[w as usize]));

@@ -126,17 +126,12 @@ pub fn budget_query(camera: String, max_faces: Option<usize>, cap: usize) -> Str
     }
 }
 
-/// The face budget of a view of `planet`: the query's `max_faces`, refused (422 naming
-/// `max_faces`) below the base mesh, as no view of the planet can be coarser; without one,
-/// [`DEFAULT_MAX_FACES`] within the server's `cap`, raised to the base mesh where that is
-/// larger (the view is then the base mesh).
+/// The face budget of a view of `planet` ([`crate::adapt::face_budget`]): the query's
+/// `max_faces` (a 422 naming it below the base mesh), else [`DEFAULT_MAX_FACES`] within the
+/// server's `cap`, raised to the base mesh where that is larger.
 pub fn view_budget(planet: &Planet, asked: Option<usize>, cap: usize) -> Result<usize, ApiError> {
-    match asked {
-        Some(n) => crate::adapt::check_budget(&planet.mesh, n)
-            .map(|()| n)
-            .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string())),
-        None => Ok(DEFAULT_MAX_FACES.min(cap).max(planet.mesh.faces.len())),
-    }
+    crate::adapt::face_budget(&planet.mesh, asked, DEFAULT_MAX_FACES.min(cap))
+        .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string()))
 }
 
 /// Renders a resource from a built planet (blocking; runs off the async runtime).
