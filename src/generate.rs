@@ -30,6 +30,8 @@ pub enum GenerateError {
     Build(#[from] BuildError),
     #[error("cannot write {path}: {source}")]
     Write { path: PathBuf, source: std::io::Error },
+    #[error("planet.glb: {0}")]
+    Glb(#[from] export::glb::GlbTooLarge),
 }
 
 /// Parses `MIN_M,MAX_M`.
@@ -66,19 +68,23 @@ pub fn build(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> Result<P
 }
 
 /// The files `generate` writes, by name, in a fixed order.
-pub fn outputs(planet: &Planet, spec: &PlanetSpec, raster_width: u32) -> Vec<(&'static str, Vec<u8>)> {
+pub fn outputs(
+    planet: &Planet,
+    spec: &PlanetSpec,
+    raster_width: u32,
+) -> Result<Vec<(&'static str, Vec<u8>)>, GenerateError> {
     let (w, h) = (raster_width, (raster_width / 2).max(1));
     let p = &spec.params;
     let mut stats = serde_json::to_vec_pretty(&planet.stats).expect("stats serialise");
     stats.push(b'\n');
-    vec![
-        ("planet.glb", export::glb::planet_glb(&planet.mesh, p)),
+    Ok(vec![
+        ("planet.glb", export::glb::planet_glb(&planet.mesh, p)?),
         ("rivers.geojson", export::geojson::rivers_geojson(&planet.mesh, &planet.rivers, p).into_bytes()),
         ("landmask.png", export::raster::landmask_png(&planet.mesh, w, h)),
         ("elevation.tif", export::raster::elevation_tiff(&planet.mesh, p, w, h)),
         ("preview.png", export::raster::preview_png(&planet.mesh, &planet.rivers, p, w, h)),
         ("stats.json", stats),
-    ]
+    ])
 }
 
 /// Writes each file atomically: to a temporary name in `dir`, then renamed into place.

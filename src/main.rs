@@ -340,7 +340,7 @@ fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -
     };
     let built = generate::build(&spec, &mut report)?;
     report("writing", 0.95);
-    let files = generate::outputs(&built, &spec, raster_width);
+    let files = generate::outputs(&built, &spec, raster_width)?;
     generate::write_outputs(out, &files)?;
     if let Some(b) = bar {
         b.finish_and_clear();
@@ -382,7 +382,8 @@ fn run_view(
     }
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
-    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin);
+    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin)
+        .map_err(|e| format!("--max-faces: {e}: ask for fewer faces"))?;
     generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])
         .map_err(|e| e.to_string())?;
     if stats {

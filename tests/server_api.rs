@@ -63,6 +63,16 @@ async fn map_upload_builds_and_serves_every_file() {
     assert_eq!(res.status().as_u16(), 304);
     assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
     assert!(res.bytes().await.unwrap().is_empty());
+    // `*` asks whether any answer exists: this one does; one whose budget is below the base
+    // mesh does not, and is refused as without the header.
+    let star = |q: String| s.client.get(s.url(&q)).header("if-none-match", "*").send();
+    let res = star(format!("/v1/planets/{id}/view.glb?{CAMERA}")).await.unwrap();
+    assert_eq!(res.status().as_u16(), 304);
+    assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
+    let low = CAMERA.replace("max_faces=50000", "max_faces=100");
+    let res = star(format!("/v1/planets/{id}/view.glb?{low}")).await.unwrap();
+    assert_eq!(res.status().as_u16(), 422);
+    assert!(res.text().await.unwrap().contains("max_faces"));
     // Key order does not matter: the query is normalised.
     let reordered = "max_faces=50000&land_px=8&height=180&width=320&target=0,0,0&eye=7e6,0,3e6";
     let res = s.get(&format!("/v1/planets/{id}/view.glb?{reordered}")).await;
@@ -104,7 +114,7 @@ async fn map_upload_builds_and_serves_every_file() {
     let metrics = s.get("/metrics").await.text().await.unwrap();
     assert!(metrics.contains("riverworld_builds_finished_total 1"), "{metrics}");
     assert!(metrics
-        .contains(r#"riverworld_http_requests_total{route="/v1/planets/{id}/view.glb",method="GET",status="304"} 1"#));
+        .contains(r#"riverworld_http_requests_total{route="/v1/planets/{id}/view.glb",method="GET",status="304"} 2"#));
     assert!(metrics.contains("riverworld_http_request_duration_seconds_bucket"));
     assert!(metrics.contains(r#"riverworld_cache_hits_total{cache="response"}"#));
 

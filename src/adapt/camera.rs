@@ -295,8 +295,9 @@ impl View {
         // `radius` while `beyond` is under 90°, at `radius + top` past it (far eyes), where
         // the cosine is negative.
         let d_eye = cam.eye.length();
-        let beyond = (radius / d_eye).clamp(-1.0, 1.0).acos() + (radius / (radius + top.max(0.0))).acos();
-        let horizon_plane = (radius * beyond.cos()).min((radius + top.max(0.0)) * beyond.cos());
+        let highest = radius + top.max(0.0);
+        let beyond = (radius / d_eye).clamp(-1.0, 1.0).acos() + (radius / highest).acos();
+        let horizon_plane = (radius * beyond.cos()).min(highest * beyond.cos());
         View {
             eye: cam.eye,
             planes,

@@ -29,7 +29,7 @@ pub fn compact(mesh: &mut Mesh) {
 /// Removes dead entities and puts the others in spatial order, keeping capacities within the
 /// slack policy; returns the renumbering.
 pub fn order(mesh: &mut Mesh) -> Renumbering {
-    let order = mesh.compact_in_spatial_order();
+    let order = mesh.compact_in_spatial_order_with_room(SLACK);
     fit_all(mesh);
     order
 }

@@ -52,9 +52,10 @@ pub fn terrain_top(params: &Params, base: &Mesh) -> f64 {
 }
 
 /// Most faces an adapted mesh may have before adaption stops refining, whatever the budget
-/// (`converged: false`). The cap is checked before each pass, and one pass at most doubles the
-/// faces, with dead slots of collapses (up to a quarter) besides: the edges (1.5 per face) then
-/// stay within the `u32` index range, whose top values mark absent and removed entities.
+/// (`converged: false`). The cap is checked before each pass, whose slots hold at most a third
+/// more dead ones of collapses (a quarter of all slots), and one pass at most doubles the live
+/// faces: under `7/3` of the cap in all, so the edges (1.5 per face) stay within the `u32`
+/// index range, whose top values mark absent and removed entities.
 pub const MAX_MESH_FACES: usize = 1 << 30;
 
 /// The face cap of a run: its budget, never above [`MAX_MESH_FACES`].
@@ -478,8 +479,8 @@ impl Adapter {
     ///
     /// Collapses only mark what they remove, so the flags stay indexed by slot and need answers
     /// only for the edges the collapses restored; the face cap counts live faces. The holes are
-    /// compacted once at the end, or early when they outgrow a quarter of the faces (or the
-    /// slack `N_ALLOC`).
+    /// compacted once at the end, or early when they outgrow both a quarter of the face slots and
+    /// the slack `N_ALLOC`.
     fn run(
         &mut self,
         view: &View,
@@ -492,7 +493,7 @@ impl Adapter {
         #[cfg(feature = "gpu")]
         if let Some(g) = self.gpu.clone() {
             let before = (stats.clone(), self.ordered_faces);
-            match self.run_on_device(&g, view, cap, refine_only, stats) {
+            match self.run_on_device(&g, view, Some(face_cap(cap)), refine_only, stats) {
                 Ok(converged) => return converged,
                 Err(e) => {
                     // The host mesh is still the one the run started from: run it again here.

@@ -126,8 +126,9 @@ impl Selection {
     /// ready). Sorted and without repeats, so the pass is deterministic.
     pub fn select(&mut self, mesh: &Mesh, wants: &[bool]) -> Vec<u32> {
         if self.reached.len() < wants.len() {
-            // To the edge buffer's capacity: the splits grow the edges in few, doubling steps.
-            self.reached = clear_flags(mesh.edges.capacity().max(wants.len()));
+            // Twice what is needed (at least the edge buffer's capacity), so that an adaption's
+            // growing mesh makes the flags anew only a few times.
+            self.reached = clear_flags(mesh.edges.capacity().max(2 * wants.len()));
         }
         let (ends, visited) = follow_chains(mesh, wants, set_flags(wants), &self.reached);
         visited.par_iter().for_each(|&e| self.reached[e as usize].store(false, Ordering::Relaxed));
@@ -165,7 +166,8 @@ fn merge_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
 /// for `[e1, e2, e3, e4]`, split by split; the split edges' slots now hold their first halves.
 pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params, view: &View) -> Vec<[bool; 4]> {
     super::compact::make_room(mesh, ready.len());
-    mesh.split_edges_judged(ready, |d| split_vertex(d, params), |edge, mid| wants_edge(view, edge, mid))
+    // SAFETY: the split list holds distinct ready edges of this mesh ([`Selection::select`]).
+    unsafe { mesh.split_edges_judged(ready, |d| split_vertex(d, params), |edge, mid| wants_edge(view, edge, mid)) }
 }
 
 #[cfg(test)]

@@ -36,6 +36,21 @@ pub struct GlbMesh {
     pub translation: Option<[f64; 3]>,
 }
 
+/// A `.glb` too large for its container, whose lengths are `u32`: at most 4 GiB.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("the .glb would be {bytes} bytes, over the 4 GiB (4,294,967,295 bytes) a binary glTF can hold")]
+pub struct GlbTooLarge {
+    pub bytes: u64,
+}
+
+/// Length of a `.glb` whose JSON chunk (padded) and binary chunk data (padded; 0 for none)
+/// take `json_len` and `bin_len` bytes, within the container's `u32` limit.
+pub fn glb_len(json_len: usize, bin_len: usize) -> Result<u32, GlbTooLarge> {
+    let bin_chunk = if bin_len == 0 { 0 } else { 8u64.saturating_add(bin_len as u64) };
+    let total = (12 + 8 + json_len as u64).saturating_add(bin_chunk);
+    u32::try_from(total).map_err(|_| GlbTooLarge { bytes: total })
+}
+
 /// Planet frame (Z-up) to glTF axes (Y-up): `(x, y, z) -> (x, z, -y)`.
 #[inline]
 pub fn to_gltf_axes(p: [f64; 3]) -> [f64; 3] {
@@ -47,7 +62,7 @@ const RIVER_RGB: [u8; 3] = [40, 90, 185];
 
 /// The planet's base mesh as a `.glb`: one mesh, one primitive, POSITION / NORMAL / COLOR_0 and
 /// u32 indices, coloured by vertex type and altitude with the climate lookup.
-pub fn planet_glb(mesh: &Mesh, params: &Params) -> Vec<u8> {
+pub fn planet_glb(mesh: &Mesh, params: &Params) -> Result<Vec<u8>, GlbTooLarge> {
     encode_glb(&[planet_mesh(mesh, params)])
 }
 
@@ -191,10 +206,13 @@ fn accessor(
     }
 }
 
+/// An opaque material, or a blended one for translucent surfaces (the water), which is
+/// double-sided so that an eye under the sea sees the surface from below.
 fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
     use json::material::{AlphaMode, PbrMetallicRoughness, StrengthFactor};
     root.push(json::Material {
         alpha_mode: Valid(if blend { AlphaMode::Blend } else { AlphaMode::Opaque }),
+        double_sided: blend,
         pbr_metallic_roughness: PbrMetallicRoughness {
             metallic_factor: StrengthFactor(0.0),
             roughness_factor: StrengthFactor(if blend { 0.2 } else { 0.9 }),
@@ -208,8 +226,8 @@ fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
 /// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene. Meshes
 /// without positions or indices are left out (no meshes at all: no scene, no buffer). Panics if
 /// `normals` or `colors` is neither empty nor as long as `positions`, or if an index is out of
-/// range.
-pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
+/// range; refuses meshes that would not fit the container ([`GlbTooLarge`]) before writing.
+pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
     use json::buffer::Target::{ArrayBuffer, ElementArrayBuffer};
     let mut root = json::Root {
         asset: json::Asset {
@@ -312,12 +330,11 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
     // GLB container: 12-byte header, JSON chunk padded with spaces, BIN chunk (when there is
     // data) padded with zeros.
     json_bytes.resize(json_bytes.len().next_multiple_of(4), b' ');
-    let bin_chunk = if bin_len == 0 { 0 } else { 8 + bin_len };
-    let total = 12 + 8 + json_bytes.len() + bin_chunk;
-    let mut out = Vec::with_capacity(total);
+    let total = glb_len(json_bytes.len(), bin_len)?;
+    let mut out = Vec::with_capacity(total as usize);
     out.extend_from_slice(b"glTF");
     out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&total.to_le_bytes());
     out.extend_from_slice(&(json_bytes.len() as u32).to_le_bytes());
     out.extend_from_slice(b"JSON");
     out.extend_from_slice(&json_bytes);
@@ -328,8 +345,8 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Vec<u8> {
             data.write(&mut out);
         }
     }
-    debug_assert_eq!(out.len(), total);
-    out
+    debug_assert_eq!(out.len(), total as usize);
+    Ok(out)
 }
 
 #[cfg(test)]

@@ -62,7 +62,7 @@ fn attribute(p: &Parsed, prim: &json::mesh::Primitive, s: json::mesh::Semantic) 
 fn planet_glb_is_valid_and_matches_the_mesh() {
     let planet = test_planet();
     let (mesh, params) = (&planet.mesh, &Params::default());
-    let glb = planet_glb(mesh, params);
+    let glb = planet_glb(mesh, params).unwrap();
     let p = parse(&glb);
     assert_eq!(p.root.asset.generator.as_deref(), Some("riverworld"));
     assert_eq!(p.root.asset.version, "2.0");
@@ -117,7 +117,7 @@ fn planet_glb_is_valid_and_matches_the_mesh() {
 fn axes_put_the_north_pole_on_plus_y() {
     let planet = test_planet();
     let mesh = &planet.mesh;
-    let glb = planet_glb(mesh, &Params::default());
+    let glb = planet_glb(mesh, &Params::default()).unwrap();
     let p = parse(&glb);
     let prim = &p.root.meshes[0].primitives[0];
     let pos = f32s(accessor_bytes(&p, &attribute(&p, prim, json::mesh::Semantic::Positions), 12));
@@ -144,9 +144,9 @@ fn axes_put_the_north_pole_on_plus_y() {
 fn planet_glb_is_deterministic() {
     let planet = test_planet();
     let params = Params::default();
-    let a = planet_glb(&planet.mesh, &params);
-    assert_eq!(a, planet_glb(&planet.mesh, &params));
-    assert_eq!(a, planet_glb(&planet.mesh.clone(), &params.clone()));
+    let a = planet_glb(&planet.mesh, &params).unwrap();
+    assert_eq!(a, planet_glb(&planet.mesh, &params).unwrap());
+    assert_eq!(a, planet_glb(&planet.mesh.clone(), &params.clone()).unwrap());
 }
 
 #[test]
@@ -159,7 +159,7 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
         translation: Some([6_371_000.125, -12.5, 3.25]),
     };
     let water = GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..tri.clone() };
-    let glb = encode_glb(&[tri.clone(), GlbMesh::default(), water]);
+    let glb = encode_glb(&[tri.clone(), GlbMesh::default(), water]).unwrap();
     let p = parse(&glb);
     assert_eq!(p.root.nodes.len(), 2, "the empty mesh is left out");
     assert_eq!(p.root.meshes.len(), 2);
@@ -172,6 +172,8 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
     let m1 = &p.root.materials[p.root.meshes[1].primitives[0].material.unwrap().value()];
     assert_eq!(m0.alpha_mode, Valid(json::material::AlphaMode::Opaque));
     assert_eq!(m1.alpha_mode, Valid(json::material::AlphaMode::Blend));
+    // The ground is seen from above only; the water also from below (an eye under the sea).
+    assert!(!m0.double_sided && m1.double_sided);
     assert!(!p.root.meshes[1].primitives[0].attributes.contains_key(&Valid(json::mesh::Semantic::Normals)));
     assert_eq!(
         glb,
@@ -180,9 +182,10 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
             GlbMesh::default(),
             GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..encode_sample() }
         ])
+        .unwrap()
     );
 
-    let empty = parse(&encode_glb(&[]));
+    let empty = parse(&encode_glb(&[]).unwrap());
     assert!(empty.bin.is_empty() && empty.root.buffers.is_empty() && empty.root.scenes.is_empty());
 }
 
@@ -197,5 +200,22 @@ fn encode_sample() -> GlbMesh {
 #[test]
 #[should_panic(expected = "index out of range")]
 fn encode_glb_rejects_bad_indices() {
-    encode_glb(&[GlbMesh { indices: vec![0, 1, 3], ..encode_sample() }]);
+    let _ = encode_glb(&[GlbMesh { indices: vec![0, 1, 3], ..encode_sample() }]);
+}
+
+/// The container's lengths are `u32`: a `.glb` one byte over 4 GiB is refused, naming its size,
+/// instead of being written with a wrapped length.
+#[test]
+fn glb_lengths_stop_at_the_containers_limit() {
+    let sample = encode_glb(&[encode_sample()]).unwrap();
+    let json_len = u32::from_le_bytes(sample[12..16].try_into().unwrap()) as usize;
+    let bin_len = u32::from_le_bytes(sample[20 + json_len..24 + json_len].try_into().unwrap()) as usize;
+    assert_eq!(glb_len(json_len, bin_len), Ok(sample.len() as u32));
+    assert_eq!(glb_len(json_len, 0), Ok(20 + json_len as u32));
+    let max = u32::MAX as usize;
+    assert_eq!(glb_len(1000, max - 1028), Ok(u32::MAX));
+    let e = glb_len(1000, max - 1027).unwrap_err();
+    assert_eq!(e, GlbTooLarge { bytes: u32::MAX as u64 + 1 });
+    assert!(e.to_string().contains("4294967296 bytes, over the 4 GiB"), "{e}");
+    assert!(glb_len(usize::MAX / 2, usize::MAX / 2).is_err());
 }

@@ -13,6 +13,7 @@ pub mod preview;
 pub mod raster;
 pub mod tiles;
 pub mod view;
+pub mod water;
 
 pub use climate::{climate_colour, climate_texture, water_colour};
 pub use geojson::rivers_geojson;

@@ -2,8 +2,9 @@
 //! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
 
 use super::climate::water_colour;
-use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
+use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh, GlbTooLarge};
 use super::surface_normals;
+use super::water::{is_wet, water_levels};
 use crate::mesh::terrain::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -13,29 +14,31 @@ use glam::DVec3;
 const WATER_ALPHA: u8 = 200;
 
 /// The local origin for a camera: the point of the base sphere below the eye, so positions near
-/// the viewer are small `f32` offsets (sub-millimetre within tens of kilometres).
+/// the viewer are small `f32` offsets (within 1 mm up to 16 km away, 1 cm up to 130 km).
 pub fn local_origin(eye: DVec3, radius: f64) -> DVec3 {
     eye.normalize_or(DVec3::X) * radius
 }
 
-/// Terrain plus water surface as one `.glb`, positions relative to `origin`.
-pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Vec<u8> {
+/// Terrain plus water surface as one `.glb`, positions relative to `origin`; refused when it
+/// would be over the container's 4 GiB (about 80 million faces of a view mostly under water).
+pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Result<Vec<u8>, GlbTooLarge> {
     let triangles = mesh.triangles();
     let normals = surface_normals(mesh, &triangles);
+    let levels = water_levels(mesh, &triangles);
     encode_glb(&[
         terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
-        water_mesh(mesh, origin, &triangles),
+        water_mesh(mesh, origin, &triangles, &levels),
     ])
 }
 
 /// Of the mesh's `triangles` ([`Mesh::triangles`]), those with at least one submerged corner,
-/// at water altitude (dry corners at the ground, so the surface meets the shore); colour by
-/// depth. Vertices are numbered in order of first use.
-pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh {
+/// at the water `levels` ([`water_levels`]: dry corners at the level of the water they border,
+/// below their ground, so the surface meets the shore inside the face); colour by depth.
+/// Vertices are numbered in order of first use.
+pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]], levels: &[f64]) -> GlbMesh {
     use rayon::prelude::*;
     let vertices = &mesh.vertices;
-    let wet: Vec<[u32; 3]> =
-        triangles.par_iter().copied().filter(|c| c.iter().any(|&v| vertices[v as usize].submerged())).collect();
+    let wet: Vec<[u32; 3]> = triangles.par_iter().copied().filter(|t| is_wet(mesh, t)).collect();
     // Numbering in order of first use is sequential; the attributes are computed in parallel.
     let mut slot = vec![u32::MAX; vertices.len()];
     let mut used = Vec::new();
@@ -52,10 +55,8 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh
     GlbMesh {
         positions: used
             .par_iter()
-            .map(at)
-            .map(|vert| {
-                let level = vert.water.max(vert.ground);
-                let p = lift(vert.p(), mesh.radius, level) - origin;
+            .map(|&v| {
+                let p = lift(vertices[v as usize].p(), mesh.radius, levels[v as usize]) - origin;
                 to_gltf_axes(p.to_array()).map(|x| x as f32)
             })
             .collect(),
@@ -73,9 +74,8 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]]) -> GlbMesh
             .collect(),
         colors: used
             .par_iter()
-            .map(at)
-            .map(|vert| {
-                let [r, g, b] = water_colour((vert.water - vert.ground).max(0.0));
+            .map(|&v| {
+                let [r, g, b] = water_colour((levels[v as usize] - vertices[v as usize].ground).max(0.0));
                 [r, g, b, WATER_ALPHA]
             })
             .collect(),
@@ -114,8 +114,8 @@ mod tests {
             }
         }
         assert!(near > 100, "{near}");
-        let glb = view_glb(a.mesh(), &p, origin);
-        assert_eq!(view_glb(a.mesh(), &p, origin), glb);
+        let glb = view_glb(a.mesh(), &p, origin).unwrap();
+        assert_eq!(view_glb(a.mesh(), &p, origin).unwrap(), glb);
         // A valid glTF: the terrain with normals and the water surface, both at the origin.
         let parsed = crate::export::glb::tests::parse(&glb);
         assert_eq!(parsed.root.nodes.len(), 2);
@@ -126,7 +126,8 @@ mod tests {
         }
         let normals = gltf_json::validation::Checked::Valid(gltf_json::mesh::Semantic::Normals);
         assert!(parsed.root.meshes[0].primitives[0].attributes.contains_key(&normals));
-        let water = water_mesh(a.mesh(), origin, &a.mesh().triangles());
+        let triangles = a.mesh().triangles();
+        let water = water_mesh(a.mesh(), origin, &triangles, &water_levels(a.mesh(), &triangles));
         assert!(!water.indices.is_empty());
         assert!(water.indices.iter().all(|&i| (i as usize) < water.positions.len()));
     }

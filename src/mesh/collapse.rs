@@ -30,7 +30,9 @@ impl Mesh {
         }
         let e1 = vert.edge;
         let edge1 = &self.edges[e1 as usize];
-        if edge1.v[1] != m {
+        // A split edge's halves are one level above it (a hand-built mesh that marks a base
+        // vertex refined has none to undo).
+        if edge1.v[1] != m || edge1.level == 0 {
             return None;
         }
         // The four faces still those of the split: f1 = (m, t, a) left of e1 = (a, m) holds e1
@@ -68,13 +70,22 @@ impl Mesh {
 
     /// Collapses the vertex at `site`, restoring the edge and the two faces it was split from.
     /// The removed vertex, edges and faces are marked dead until [`Mesh::compact`].
+    ///
+    /// # Panics
+    /// When `site` is not the vertex's current [`Mesh::collapse_site`] (stale, or made by hand).
     pub fn collapse_vertex(&mut self, site: &CollapseSite) {
-        self.collapse_vertices(std::slice::from_ref(site));
+        assert!(self.collapse_site(site.v).as_ref() == Some(site), "vertex {} cannot collapse as {site:?}", site.v);
+        // SAFETY: the one site is the vertex's current one.
+        unsafe { self.collapse_vertices(std::slice::from_ref(site)) };
     }
 
-    /// Collapses many vertices at once, in parallel; their sites must not share a face (each
-    /// vertex's four faces are its own, so candidates found on one mesh never do).
-    pub fn collapse_vertices(&mut self, sites: &[CollapseSite]) {
+    /// Collapses many vertices at once, in parallel.
+    ///
+    /// # Safety
+    /// Each site must be [`Mesh::collapse_site`] of its vertex in the current mesh, and the
+    /// vertices distinct: the collapses then own disjoint faces and edges (each vertex's four
+    /// faces are its own). A stale or repeated site makes writes out of bounds or races.
+    pub unsafe fn collapse_vertices(&mut self, sites: &[CollapseSite]) {
         use rayon::prelude::*;
         let bufs = Buffers {
             v: self.vertices.as_mut_ptr(),

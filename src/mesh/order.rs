@@ -73,8 +73,15 @@ fn inverse(order: &[u32], len: usize) -> Vec<u32> {
 }
 
 /// The live items moved to their new ids (`map`, [`DEAD`] for dead ones; a bijection onto
-/// `0..len`), each changed by `update`. Reads the old buffer in order and writes in parallel.
-fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: impl Fn(&mut T) + Sync) -> Vec<T> {
+/// `0..len`), each changed by `update`, in a buffer with room for `room` more. Reads the old
+/// buffer in order and writes in parallel.
+fn scatter<T: Copy + Send + Sync>(
+    items: &[T],
+    map: &[u32],
+    len: usize,
+    room: usize,
+    update: impl Fn(&mut T) + Sync,
+) -> Vec<T> {
     struct Out<T>(*mut T);
     // SAFETY: the threads write disjoint slots (the map is injective on live items).
     unsafe impl<T> Sync for Out<T> {}
@@ -84,13 +91,13 @@ fn scatter<T: Copy + Send + Sync>(items: &[T], map: &[u32], len: usize, update: 
             self.0.add(i).write(x)
         }
     }
-    let mut out: Vec<T> = Vec::with_capacity(len);
+    let mut out: Vec<T> = Vec::with_capacity(len + room);
     let dst = &Out(out.as_mut_ptr());
     items.par_iter().zip(map.par_iter()).with_min_len(4096).for_each(|(x, &new)| {
         if new != DEAD {
             let mut x = *x;
             update(&mut x);
-            debug_assert!((new as usize) < len);
+            assert!((new as usize) < len, "renumbered past the end");
             // SAFETY: `new < len` is within the capacity and no other item maps to it.
             unsafe { dst.write(new as usize, x) };
         }
@@ -190,8 +197,14 @@ impl Mesh {
     /// (module doc), updating every reference. Returns the renumbering, for copies of the mesh
     /// kept elsewhere to follow.
     pub fn compact_in_spatial_order(&mut self) -> Renumbering {
+        self.compact_in_spatial_order_with_room((0, 0, 0))
+    }
+
+    /// [`Mesh::compact_in_spatial_order`], leaving room for `room` more vertices, edges and
+    /// faces in the new buffers (so that making room later does not copy them again).
+    pub fn compact_in_spatial_order_with_room(&mut self, room: (usize, usize, usize)) -> Renumbering {
         let order = self.spatial_order();
-        self.renumber(&order);
+        self.renumber(&order, room);
         order
     }
 
@@ -228,16 +241,17 @@ impl Mesh {
         Renumbering { vertices: vmap, edges: emap, faces: fmap, sizes: (vorder.len(), eorder.len(), forder.len()) }
     }
 
-    /// Moves every live entity to its new id in `order` and renumbers its references.
-    pub fn renumber(&mut self, order: &Renumbering) {
+    /// Moves every live entity to its new id in `order` (a bijection onto `0..sizes` of the
+    /// live entities, as [`Mesh::spatial_order`] makes) and renumbers its references.
+    fn renumber(&mut self, order: &Renumbering, room: (usize, usize, usize)) {
         let (nv, ne, nf) = order.sizes;
         let (vmap, emap, fmap) = (&order.vertices[..], &order.edges[..], &order.faces[..]);
-        self.vertices = scatter(&self.vertices, vmap, nv, |x| x.edge = renumbered(emap, x.edge));
-        self.edges = scatter(&self.edges, emap, ne, |x| {
+        self.vertices = scatter(&self.vertices, vmap, nv, room.0, |x| x.edge = renumbered(emap, x.edge));
+        self.edges = scatter(&self.edges, emap, ne, room.1, |x| {
             x.v = x.v.map(|v| renumbered(vmap, v));
             x.f = x.f.map(|f| renumbered(fmap, f));
         });
-        self.faces = scatter(&self.faces, fmap, nf, |x| x.e = x.e.map(|e| renumbered(emap, e)));
+        self.faces = scatter(&self.faces, fmap, nf, room.2, |x| x.e = x.e.map(|e| renumbered(emap, e)));
     }
 }
 
@@ -272,7 +286,7 @@ mod tests {
                     len += 1;
                 }
             }
-            let expected = scatter(&items, &map, len as usize, |x| *x += 1);
+            let expected = scatter(&items, &map, len as usize, 0, |x| *x += 1);
             let mut squeezed = items.clone();
             squeeze(&mut squeezed, &map, len as usize, |x| *x += 1);
             assert_eq!(squeezed, expected);

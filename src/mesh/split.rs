@@ -110,18 +110,29 @@ impl Mesh {
     /// are single-word atomic stores and everything else is plain. Returns the number of splits.
     ///
     /// # Panics
-    /// When an edge is not ready (the mesh is then left inconsistent: a caller's bug).
+    /// When the edges are not distinct and in increasing order, or one is not ready; nothing
+    /// is split then.
     pub fn split_edges<F>(&mut self, edges: &[u32], make: F) -> usize
     where
         F: Fn(&Diamond) -> (Vertex, [EdgeKind; 4]) + Sync,
     {
-        self.split_edges_judged(edges, make, |_, _| ()).len()
+        assert!(edges.windows(2).all(|w| w[0] < w[1]), "the edges to split must be distinct, in increasing order");
+        if let Some(&e) = edges.iter().find(|&&e| self.split_site(e).is_none()) {
+            panic!("edge {e} is not ready to split");
+        }
+        // SAFETY: checked just above.
+        unsafe { self.split_edges_judged(edges, make, |_, _| ()).len() }
     }
 
     /// [`Mesh::split_edges`], asking `judge` about each split's four edges `[e1, e2, e3, e4]`
     /// as written, with their midpoints, while they are at hand: returns its answers, split by
-    /// split in the order of `edges`.
-    pub fn split_edges_judged<F, J, T>(&mut self, edges: &[u32], make: F, judge: J) -> Vec<[T; 4]>
+    /// split in the order of `edges`. It does not check the edges first.
+    ///
+    /// # Safety
+    /// The edges must be distinct ids of this mesh, each ready ([`Mesh::split_site`] is
+    /// `Some`): a split reads ahead the diamonds of the splits after it, and two splits of one
+    /// edge would race.
+    pub unsafe fn split_edges_judged<F, J, T>(&mut self, edges: &[u32], make: F, judge: J) -> Vec<[T; 4]>
     where
         F: Fn(&Diamond) -> (Vertex, [EdgeKind; 4]) + Sync,
         J: Fn(&Edge, DVec3) -> T + Sync,

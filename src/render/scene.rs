@@ -76,38 +76,6 @@ pub fn default_sun(cam: &Camera) -> DVec3 {
     (local_up * 1.2 + right * 0.5 + up * 0.4 - fwd * 0.3).normalize()
 }
 
-/// Water level of every vertex (see [`RenderVertex`]): own water where submerged, else the
-/// highest water of submerged face neighbours, else own water.
-pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f32> {
-    let mut level: Vec<f32> =
-        mesh.vertices.par_iter().map(|v| if v.submerged() { v.water as f32 } else { f32::NEG_INFINITY }).collect();
-    // Each face's highest standing water, in parallel; spread to its dry vertices in face order.
-    let wet_faces: Vec<([u32; 3], f32)> = triangles
-        .par_iter()
-        .filter_map(|&corners| {
-            let wet = corners
-                .iter()
-                .map(|&v| &mesh.vertices[v as usize])
-                .filter(|v| v.submerged())
-                .map(|v| v.water as f32)
-                .fold(f32::NEG_INFINITY, f32::max);
-            (wet > f32::NEG_INFINITY).then_some((corners, wet))
-        })
-        .collect();
-    for &(corners, wet) in &wet_faces {
-        for v in corners {
-            if !mesh.vertices[v as usize].submerged() {
-                level[v as usize] = level[v as usize].max(wet);
-            }
-        }
-    }
-    level
-        .par_iter()
-        .zip(mesh.vertices.par_iter())
-        .map(|(&l, v)| if l == f32::NEG_INFINITY { v.water as f32 } else { l })
-        .collect()
-}
-
 /// Reversed-Z, infinite-far perspective times a rotation-only view (the eye is the origin).
 pub fn view_projection(cam: &Camera) -> DMat4 {
     let (fwd, _, up) = cam.basis();
@@ -120,7 +88,7 @@ pub fn view_projection(cam: &Camera) -> DMat4 {
 pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene {
     let triangles = mesh.triangles();
     let normals = crate::export::surface_normals(mesh, &triangles);
-    let levels = water_levels(mesh, &triangles);
+    let levels = crate::export::water::water_levels(mesh, &triangles);
     let sea = params.sea_level_m;
     let eye = cam.eye;
     let vertices: Vec<RenderVertex> = mesh
@@ -135,17 +103,14 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
                 position: (p - eye).as_vec3().to_array(),
                 ground_m: (v.ground - sea) as f32,
                 normal: n.as_vec3().to_array(),
-                water_m: (*level as f64 - sea) as f32,
+                water_m: (level - sea) as f32,
                 up: up.as_vec3().to_array(),
                 latitude_deg: lat_lon(p).0 as f32,
             }
         })
         .collect();
-    let water: Vec<u32> = triangles
-        .par_iter()
-        .filter(|t| t.iter().any(|&v| mesh.vertices[v as usize].submerged()))
-        .flat_map_iter(|&t| t)
-        .collect();
+    let water: Vec<u32> =
+        triangles.par_iter().filter(|t| crate::export::water::is_wet(mesh, t)).flat_map_iter(|&t| t).collect();
     let terrain: Vec<u32> = triangles.into_iter().flatten().collect();
     let (fwd, right, up) = cam.basis();
     let tan_y = (cam.fov_deg.to_radians() * 0.5).tan();

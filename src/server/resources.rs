@@ -151,6 +151,7 @@ fn render(
             adapter.adapt(cam, Some(budget));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
             export::view::view_glb(adapter.mesh(), params, origin)
+                .map_err(|e| ApiError::unprocessable("too_large", "max_faces", format!("{e}: ask for fewer faces")))?
         }
         (_, Job::Rivers) => export::rivers_geojson(mesh, &planet.rivers, params).into_bytes(),
         (Resource::Landmask, Job::Raster { width }) => export::landmask_png(mesh, *width, (*width / 2).max(1)),
@@ -162,10 +163,11 @@ fn render(
 }
 
 /// Revision of what the derived answers hold, for the same id, route and query: raised whenever
-/// a change to the software changes their bytes (here: eq. 6 per side of the frustum, the
-/// horizon's height, the sea never finer than the land), so that caches holding the old bytes
-/// under a strong, immutable `ETag` see a new one.
-const ANSWERS_REVISION: &str = "2";
+/// a change to the software changes their bytes (revision 2: eq. 6 per side of the frustum, the
+/// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
+/// inside partly wet faces, and is double-sided), so that caches holding the old bytes under a
+/// strong, immutable `ETag` see a new one.
+const ANSWERS_REVISION: &str = "3";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.
@@ -179,13 +181,17 @@ fn etag(id: &str, route: &str, norm: &str) -> String {
     format!("\"{hex}\"")
 }
 
-/// Whether `If-None-Match` lists `tag` (weak comparison, as the header asks).
-fn matches(headers: &HeaderMap, tag: &str) -> bool {
-    headers
-        .get_all(header::IF_NONE_MATCH)
-        .iter()
-        .filter_map(|v| v.to_str().ok())
-        .any(|v| v.split(',').map(str::trim).any(|t| t == "*" || t.trim_start_matches("W/") == tag))
+/// What `If-None-Match` asks of an answer tagged `tag`: whether it lists the tag (weak
+/// comparison, as the header asks), and whether it lists `*` (any current representation).
+fn if_none_match(headers: &HeaderMap, tag: &str) -> (bool, bool) {
+    let mut answer = (false, false);
+    for v in headers.get_all(header::IF_NONE_MATCH).iter().filter_map(|v| v.to_str().ok()) {
+        for t in v.split(',').map(str::trim) {
+            answer.0 |= t.trim_start_matches("W/") == tag;
+            answer.1 |= t == "*";
+        }
+    }
+    answer
 }
 
 fn immutable(res: Response, tag: &str) -> Response {
@@ -225,7 +231,8 @@ pub fn cache_key(id: &str, route: &str, norm: &str) -> String {
     format!("{id}/{route}?{norm}")
 }
 
-/// Answers a derived file: 304 when `If-None-Match` lists its tag, from the cache, or by
+/// Answers a derived file: 304 when `If-None-Match` lists its tag (or `*` and the answer
+/// exists: found in the cache or rendered without error), from the cache, or by
 /// running `render` on the built planet (off the runtime, under a render permit, shared by
 /// concurrent requests) and caching the bytes; 409 while the planet is not built. An error from
 /// `render` is answered as it is and nothing is cached.
@@ -243,7 +250,14 @@ where
     let Derived { route, norm, content_type } = derived;
     let tag = etag(&id, &route, &norm);
     let key = cache_key(&id, &route, &norm);
+    // A listed tag is the answer's (the tag is a function of what it is derived from), so it
+    // stands even before the planet is built; `*` stands only once the answer exists.
+    let (tagged, star) = if_none_match(&headers, &tag);
+    let not_modified = || immutable(StatusCode::NOT_MODIFIED.into_response(), &tag);
     let ok = |bytes: Bytes| {
+        if star {
+            return not_modified();
+        }
         let r = ([(header::CONTENT_TYPE, HeaderValue::from_static(content_type))], bytes).into_response();
         immutable(r, &tag)
     };
@@ -251,7 +265,7 @@ where
         Availability::Failed(e) => {
             return Err(ApiError::new(StatusCode::CONFLICT, "build_failed", format!("the build failed: {}", e.message)))
         }
-        _ if matches(&headers, &tag) => return Ok(immutable(StatusCode::NOT_MODIFIED.into_response(), &tag)),
+        _ if tagged => return Ok(not_modified()),
         Availability::Ready(p) => Some(p),
         Availability::Pending => None,
     };

@@ -49,13 +49,32 @@ impl std::fmt::Debug for DeviceMesh {
     }
 }
 
+/// Bytes [`buffer`] allocates for `size`.
+fn padded(size: u64) -> u64 {
+    size.next_multiple_of(256).max(256)
+}
+
 fn buffer(device: &wgpu::Device, label: &str, size: u64, usage: U) -> wgpu::Buffer {
     device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
-        size: size.next_multiple_of(256).max(256),
+        size: padded(size),
         usage,
         mapped_at_creation: false,
     })
+}
+
+/// Runs `work` (buffer creation, copies) with the device's out-of-memory and validation errors
+/// caught: an error is returned instead of reaching the device's handler, which panics, so
+/// that the adapter can go on on the CPU. Whatever `work` made is dropped on an error.
+fn scoped<T>(gpu: &GpuAdaption, work: impl FnOnce() -> T) -> Result<T, GpuError> {
+    let oom = gpu.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+    let validation = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let out = work();
+    let invalid = futures::executor::block_on(validation.pop());
+    match futures::executor::block_on(oom.pop()).or(invalid) {
+        Some(e) => Err(GpuError::Device(e.to_string())),
+        None => Ok(out),
+    }
 }
 
 const STORE: U = U::STORAGE.union(U::COPY_SRC).union(U::COPY_DST);
@@ -70,25 +89,34 @@ impl DeviceMesh {
     pub(super) fn upload(gpu: &GpuAdaption, mesh: &Mesh) -> Result<DeviceMesh, GpuError> {
         let (nv, ne, nf) = (mesh.vertices.len(), mesh.edges.len(), mesh.faces.len());
         let mut dm = DeviceMesh::with_capacity(gpu, nv, ne, nf)?;
-        gpu.queue.write_buffer(&dm.vertices, 0, bytemuck::cast_slice(&mesh.vertices));
-        gpu.queue.write_buffer(&dm.edges, 0, bytemuck::cast_slice(&mesh.edges));
-        gpu.queue.write_buffer(&dm.faces, 0, bytemuck::cast_slice(&mesh.faces));
+        scoped(gpu, || {
+            gpu.queue.write_buffer(&dm.vertices, 0, bytemuck::cast_slice(&mesh.vertices));
+            gpu.queue.write_buffer(&dm.edges, 0, bytemuck::cast_slice(&mesh.edges));
+            gpu.queue.write_buffer(&dm.faces, 0, bytemuck::cast_slice(&mesh.faces));
+        })?;
         dm.lens = (nv, ne, nf);
         Ok(dm)
     }
 
-    /// Buffers with room for `nv` vertices, `ne` edges and `nf` faces plus slack; empty.
+    /// Buffers with room for `nv` vertices, `ne` edges and `nf` faces plus slack; empty. A
+    /// mesh over the device's limits, or its memory, is an error.
     pub(super) fn with_capacity(gpu: &GpuAdaption, nv: usize, ne: usize, nf: usize) -> Result<DeviceMesh, GpuError> {
         let device = &gpu.device;
         let (cv, ce, cf) = (with_slack(nv, SLACK.0), with_slack(ne, SLACK.1), with_slack(nf, SLACK.2));
-        let limit = device.limits().max_storage_buffer_binding_size;
-        for needed in [cv * VERTEX_BYTES as u64, ce * EDGE_BYTES as u64, cf * FACE_BYTES as u64] {
+        let limits = device.limits();
+        let limit = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size);
+        for needed in [cv * VERTEX_BYTES as u64, ce * EDGE_BYTES as u64, cf * FACE_BYTES as u64].map(padded) {
             if needed > limit {
                 return Err(GpuError::TooLarge { needed, limit });
             }
         }
+        scoped(gpu, || DeviceMesh::create(device, (cv, ce, cf), (nv, ne, nf)))
+    }
+
+    /// The buffers of [`DeviceMesh::with_capacity`], capacities `(cv, ce, cf)`, lengths `lens`.
+    fn create(device: &wgpu::Device, (cv, ce, cf): (u64, u64, u64), lens: (usize, usize, usize)) -> DeviceMesh {
         let flags = |label| buffer(device, label, 4 * ce, STORE);
-        Ok(DeviceMesh {
+        DeviceMesh {
             vertices: buffer(device, "vertices", cv * VERTEX_BYTES as u64, STORE),
             edges: buffer(device, "edges", ce * EDGE_BYTES as u64, STORE),
             faces: buffer(device, "faces", cf * FACE_BYTES as u64, STORE),
@@ -115,8 +143,8 @@ impl DeviceMesh {
                 STAMPS_AT + 16 * super::TIMED_PASSES as u64,
                 U::MAP_READ | U::COPY_DST,
             ),
-            lens: (nv, ne, nf),
-        })
+            lens,
+        }
     }
 
     /// A copy of the mesh in new buffers, made on the device: the same as uploading the mesh
@@ -124,11 +152,13 @@ impl DeviceMesh {
     pub(super) fn duplicate(&self, gpu: &GpuAdaption) -> Result<DeviceMesh, GpuError> {
         let (nv, ne, nf) = self.lens;
         let copy = DeviceMesh::with_capacity(gpu, nv, ne, nf)?;
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        encoder.copy_buffer_to_buffer(&self.vertices, 0, &copy.vertices, 0, (nv * VERTEX_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.edges, 0, &copy.edges, 0, (ne * EDGE_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.faces, 0, &copy.faces, 0, (nf * FACE_BYTES) as u64);
-        gpu.queue.submit([encoder.finish()]);
+        scoped(gpu, || {
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            encoder.copy_buffer_to_buffer(&self.vertices, 0, &copy.vertices, 0, (nv * VERTEX_BYTES) as u64);
+            encoder.copy_buffer_to_buffer(&self.edges, 0, &copy.edges, 0, (ne * EDGE_BYTES) as u64);
+            encoder.copy_buffer_to_buffer(&self.faces, 0, &copy.faces, 0, (nf * FACE_BYTES) as u64);
+            gpu.queue.submit([encoder.finish()]);
+        })?;
         Ok(copy)
     }
 
@@ -151,34 +181,56 @@ impl DeviceMesh {
             return Ok(());
         }
         let bigger = DeviceMesh::with_capacity(gpu, nv + n, ne + 3 * n, nf + 2 * n)?;
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        encoder.copy_buffer_to_buffer(&self.vertices, 0, &bigger.vertices, 0, (nv * VERTEX_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.edges, 0, &bigger.edges, 0, (ne * EDGE_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.faces, 0, &bigger.faces, 0, (nf * FACE_BYTES) as u64);
-        encoder.copy_buffer_to_buffer(&self.list, 0, &bigger.list, 0, 4 * ne as u64);
-        encoder.copy_buffer_to_buffer(&self.marks, 0, &bigger.marks, 0, 4 * nv as u64);
-        gpu.queue.submit([encoder.finish()]);
+        scoped(gpu, || {
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            encoder.copy_buffer_to_buffer(&self.vertices, 0, &bigger.vertices, 0, (nv * VERTEX_BYTES) as u64);
+            encoder.copy_buffer_to_buffer(&self.edges, 0, &bigger.edges, 0, (ne * EDGE_BYTES) as u64);
+            encoder.copy_buffer_to_buffer(&self.faces, 0, &bigger.faces, 0, (nf * FACE_BYTES) as u64);
+            encoder.copy_buffer_to_buffer(&self.list, 0, &bigger.list, 0, 4 * ne as u64);
+            encoder.copy_buffer_to_buffer(&self.marks, 0, &bigger.marks, 0, 4 * nv as u64);
+            gpu.queue.submit([encoder.finish()]);
+        })?;
         *self = DeviceMesh { lens: self.lens, ..bigger };
         Ok(())
     }
 
     /// Reads the mesh back: the three buffers copied into one staging buffer, one wait, and
-    /// each mapped range turned into its typed vector with a single copy.
+    /// each mapped range turned into its typed vector with a single copy. A mesh larger than
+    /// the device's largest buffer is read buffer by buffer instead.
     pub(super) fn download(&self, gpu: &GpuAdaption, radius: f64) -> Result<Mesh, GpuError> {
+        self.download_staged(gpu, radius, gpu.device.limits().max_buffer_size)
+    }
+
+    /// [`DeviceMesh::download`] with staging buffers of at most `largest` bytes (but one per
+    /// mesh buffer).
+    pub(super) fn download_staged(&self, gpu: &GpuAdaption, radius: f64, largest: u64) -> Result<Mesh, GpuError> {
         let (nv, ne, nf) = self.lens;
         let sizes = [nv * VERTEX_BYTES, ne * EDGE_BYTES, nf * FACE_BYTES].map(|n| n as u64);
         let total: u64 = sizes.iter().sum();
         if total == 0 {
             return Ok(Mesh { radius, ..Mesh::default() });
         }
-        let staging = buffer_exact(&gpu.device, "staging", total, U::MAP_READ | U::COPY_DST);
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        let mut at = 0;
-        for (buffer, size) in [&self.vertices, &self.edges, &self.faces].into_iter().zip(sizes) {
-            encoder.copy_buffer_to_buffer(buffer, 0, &staging, at, size);
-            at += size;
+        let buffers = [&self.vertices, &self.edges, &self.faces];
+        if total > largest {
+            let [v, e, f] = [0, 1, 2].map(|i| read_bytes(gpu, buffers[i], sizes[i]));
+            return Ok(Mesh {
+                radius,
+                vertices: bytemuck::pod_collect_to_vec::<u8, Vertex>(&v?),
+                edges: checked_vec::<Edge>(&e?, "edge")?,
+                faces: checked_vec::<Face>(&f?, "face")?,
+            });
         }
-        gpu.queue.submit([encoder.finish()]);
+        let staging = scoped(gpu, || {
+            let staging = buffer_exact(&gpu.device, "staging", total, U::MAP_READ | U::COPY_DST);
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            let mut at = 0;
+            for (buffer, size) in buffers.into_iter().zip(sizes) {
+                encoder.copy_buffer_to_buffer(buffer, 0, &staging, at, size);
+                at += size;
+            }
+            gpu.queue.submit([encoder.finish()]);
+            staging
+        })?;
         map_with(gpu, &staging, total, |data| {
             let (vertex_bytes, rest) = data.split_at(sizes[0] as usize);
             let (edge_bytes, face_bytes) = rest.split_at(sizes[1] as usize);
@@ -200,14 +252,22 @@ impl DeviceMesh {
 
 /// The first `size` bytes of `buffer` (a multiple of four), as words, through a staging buffer.
 pub(super) fn read(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u32>, GpuError> {
+    Ok(bytemuck::pod_collect_to_vec::<u8, u32>(&read_bytes(gpu, buffer, size)?))
+}
+
+/// The first `size` bytes of a device buffer.
+fn read_bytes(gpu: &GpuAdaption, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u8>, GpuError> {
     if size == 0 {
         return Ok(Vec::new());
     }
-    let staging = buffer_exact(&gpu.device, "staging", size, U::MAP_READ | U::COPY_DST);
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
-    gpu.queue.submit([encoder.finish()]);
-    map_words(gpu, &staging, size)
+    let staging = scoped(gpu, || {
+        let staging = buffer_exact(&gpu.device, "staging", size, U::MAP_READ | U::COPY_DST);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+        gpu.queue.submit([encoder.finish()]);
+        staging
+    })?;
+    map_with(gpu, &staging, size, |data| data.to_vec())
 }
 
 fn buffer_exact(device: &wgpu::Device, label: &str, size: u64, usage: U) -> wgpu::Buffer {

@@ -11,7 +11,7 @@ use crate::mesh::Tangent;
 use crate::params::Params;
 use bytemuck::{Pod, Zeroable};
 
-const WORKGROUP: u32 = 64;
+pub(super) const WORKGROUP: u32 = 64;
 
 /// The terrain parameters and batch shape as `adapt_split.wgsl` reads them (`SplitParams`).
 #[repr(C)]

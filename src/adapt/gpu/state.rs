@@ -7,7 +7,7 @@ use super::{dispatch_grid, GpuAdaption, Stage, Submission};
 use crate::adapt::camera::{View, C_LOD};
 use bytemuck::{Pod, Zeroable};
 
-const WORKGROUP: u32 = 256;
+pub(super) const WORKGROUP: u32 = 256;
 
 /// The view as `adapt_state.wgsl` reads it (`struct View`).
 #[repr(C)]

@@ -257,7 +257,8 @@ fn mesh_with_holes() -> (Mesh, usize) {
     let wants = state::edge_wants(&mesh, &far);
     let sites = state::collapse_candidates(&mesh, &far, &state::demanded(&mesh, &wants), None);
     assert!(sites.len() > 1000, "only {} collapses", sites.len());
-    mesh.collapse_vertices(&sites);
+    // SAFETY: the sites were found on this mesh, one per vertex.
+    unsafe { mesh.collapse_vertices(&sites) };
     (mesh, sites.len())
 }
 
@@ -307,4 +308,92 @@ fn the_device_copy_follows_the_spatial_order_of_the_host() {
     assert!(!dev.resident.ahead);
     let copy = kept.download(&g, dev.mesh.radius).unwrap();
     assert_same_mesh(&dev.mesh, &copy, "the ordered device copy");
+}
+
+/// A mesh larger than the device's largest buffer is read back buffer by buffer: the same mesh,
+/// byte for byte. A mesh over the device's binding limit is refused with an error (the adapter
+/// then goes on on the CPU) rather than a panic.
+#[test]
+fn large_meshes_read_back_or_are_refused() {
+    let g = gpu();
+    let mesh = planet().mesh.clone();
+    let dm = DeviceMesh::upload(&g, &mesh).unwrap();
+    let whole = dm.download(&g, mesh.radius).unwrap();
+    let staged = dm.download_staged(&g, mesh.radius, 1024).unwrap();
+    assert!(whole == mesh && staged == mesh);
+    let limit = g.device.limits().max_storage_buffer_binding_size;
+    let too_many = (limit / crate::mesh::EDGE_BYTES as u64) as usize;
+    match DeviceMesh::with_capacity(&g, 10, too_many, 10) {
+        Err(GpuError::TooLarge { needed, limit: l }) => assert!(needed > l && l <= limit, "{needed} {l}"),
+        other => panic!("expected TooLarge, got {other:?}"),
+    }
+}
+
+/// Constants the shaders spell out themselves agree with the host's: workgroup sizes (the
+/// host's dispatch grids count in them), the scan's block, the tangent code's range, and the
+/// level-of-detail ball of a child edge (`child_lod` takes `LOD_RADIUS` as 1).
+#[test]
+fn shader_constants_match_the_host() {
+    let sizes = |src: &str| -> Vec<u32> {
+        src.split("@workgroup_size(").skip(1).map(|s| s[..s.find(')').unwrap()].trim().parse().unwrap()).collect()
+    };
+    let shaders: [(&str, &str, u32); 6] = [
+        ("split", include_str!("../../../shaders/adapt_split.wgsl"), split::WORKGROUP),
+        ("state", include_str!("../../../shaders/adapt_state.wgsl"), super::state::WORKGROUP),
+        ("select", include_str!("../../../shaders/adapt_select.wgsl"), WORKGROUP),
+        ("scan", include_str!("../../../shaders/adapt_scan.wgsl"), WORKGROUP),
+        ("collapse", include_str!("../../../shaders/adapt_collapse.wgsl"), WORKGROUP),
+        ("compact", include_str!("../../../shaders/adapt_compact.wgsl"), WORKGROUP),
+    ];
+    for (name, src, size) in shaders {
+        let found = sizes(src);
+        assert!(!found.is_empty() && found.iter().all(|&s| s == size), "{name}: {found:?} vs {size}");
+    }
+    assert!(include_str!("../../../shaders/adapt_scan.wgsl").contains(&format!("const BLOCK: u32 = {BLOCK}u;")));
+    let split_src = include_str!("../../../shaders/adapt_split.wgsl");
+    let scale = crate::mesh::Tangent::SCALE;
+    assert_eq!(split_src.matches(&format!("f64(-{scale:.1}), f64({scale:.1})")).count(), 2);
+    assert_eq!(crate::mesh::LOD_RADIUS, 1.0);
+}
+
+/// A planet whose parameters all differ from the defaults and from each other (the slopes
+/// especially, which the default planet sets alike), on another radius: the device reads each
+/// parameter where the CPU does.
+#[test]
+fn a_planet_with_other_parameters_adapts_alike() {
+    let params = Params {
+        radius_m: 3_000_000.0,
+        base_faces: 3000,
+        min_edge_length_m: 0.05,
+        max_river_altitude_m: 9_000.0,
+        max_mountain_altitude_m: 11_000.0,
+        sea_level_m: 2_000.0,
+        max_river_depth_m: 120.0,
+        min_river_length_m: 90_000.0,
+        min_river_slope_m_per_km: 2.5,
+        min_riverbed_slope_m_per_km: 170.0,
+        min_slope_near_river_m_per_km: 7.0,
+        riverbed_edge_height_m: 4.0,
+        max_ground_slope_m_per_km: 640.0,
+        ..Params::default()
+    };
+    params.validate().unwrap();
+    let planet = build_planet(&PlanetSpec { seed: 11, params: params.clone(), map: None }, &mut |_, _| {}).unwrap();
+    let r = params.radius_m;
+    let top = crate::adapt::terrain_top(&params, &planet.mesh);
+    let mut cpu = Adapter::new(planet.mesh.clone(), params.clone());
+    let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
+    for (i, (lat, lon, height)) in [(10.0, 20.0, 3e6), (-30.0, 140.0, 2e4), (45.0, -60.0, 3e3)].into_iter().enumerate()
+    {
+        let dir = crate::build::continents::direction(lat, lon);
+        let eye = dir * (r + params.sea_level_m + height);
+        let cam = Camera::new(eye, dir * r + DVec3::Z * (height + 1e4), None, 50.0, 480, 270, 3.0, 15.0, r).unwrap();
+        let v = View::new(&cam, r, params.min_edge_length_m, top);
+        assert_eq!(state::edge_wants(cpu.mesh(), &v), edge_wants(&gpu(), cpu.mesh(), &v).unwrap(), "camera {i}");
+        let (a, b) = (cpu.adapt(&cam, Some(80_000)), dev.adapt(&cam, Some(80_000)));
+        assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
+        assert_eq!((a.faces, a.splits, a.collapses), (b.faces, b.splits, b.collapses), "camera {i}");
+        assert!(a.splits > 1000, "camera {i}: {a:?}");
+        assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
+    }
 }

@@ -14,6 +14,7 @@ use super::ring::border_normals;
 use super::tree::{Refiner, ROOTS};
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
 use crate::export::view::water_mesh;
+use crate::export::water::water_levels;
 use crate::mesh::terrain::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -79,11 +80,12 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let depth = 2 * u32::from(key.level) + spec.content_depth;
     let normals = border_normals(refiner, cell, depth, &surface, &triangles, &ids, &border);
 
+    let levels = water_levels(&surface, &triangles);
     let mut hull: Vec<DVec3> = Vec::with_capacity(surface.vertices.len() + border.len());
-    for v in &surface.vertices {
+    for (v, &level) in surface.vertices.iter().zip(&levels) {
         hull.push(v.p());
-        if v.submerged() {
-            hull.push(lift(v.p(), surface.radius, v.water));
+        if level != v.ground {
+            hull.push(lift(v.p(), surface.radius, level));
         }
     }
     hull.extend(border.iter().map(|&(a, _)| skirt_foot(surface.vertices[a as usize].p(), spec.skirt_m)));
@@ -93,9 +95,10 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &triangles, &normals);
     terrain.translation = None;
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
-    let mut water = water_mesh(&surface, origin, &triangles);
+    let mut water = water_mesh(&surface, origin, &triangles, &levels);
     water.translation = None;
-    let glb = encode_glb(&[terrain, water]);
+    // A tile holds 1,024 triangles (plus skirts and water): far below the container's limit.
+    let glb = encode_glb(&[terrain, water]).expect("a tile fits a .glb");
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
 }
 
