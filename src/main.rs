@@ -97,8 +97,9 @@ enum Command {
         #[arg(long)]
         stats: bool,
         /// Where adaption runs: cpu (rayon), gpu (wgpu compute: every stage, the mesh kept on
-        /// the device) or auto (the GPU when the adapter is a real GPU with f64 in shaders, else
-        /// the CPU). The choice is printed on stderr.
+        /// the device) or auto (the GPU when the adapter is a real GPU with f64 in shaders whose
+        /// meshes are the CPU's bit for bit, checked on a small planet; else the CPU). The choice
+        /// is printed on stderr.
         #[arg(long, default_value = "auto", value_parser = parse_backend)]
         backend: riverworld::adapt::gpu::Backend,
     },
@@ -218,7 +219,8 @@ struct ServeArgs {
     max_render_pixels: u64,
     /// Where adaption runs for views and snapshots: cpu (rayon), gpu (wgpu compute; refuses to
     /// start without a suitable adapter) or auto (the GPU when the adapter is a real GPU with
-    /// f64 in shaders, else the CPU). The choice is logged at start; the answers are the same.
+    /// f64 in shaders whose meshes are the CPU's bit for bit, checked on a small planet; else
+    /// the CPU). The choice is logged at start.
     #[arg(long, default_value = "auto", value_parser = parse_backend)]
     backend: riverworld::adapt::gpu::Backend,
 }

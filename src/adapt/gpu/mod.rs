@@ -18,12 +18,14 @@
 //! go to the driver as SPIR-V whose float operations are decorated `NoContraction`
 //! (`spirv.rs`); on other backends a compiler may fuse, and a decision can then differ only for
 //! an edge within about 1e-15 (relative) of its threshold. Adapters without `f64` (e.g. Metal)
-//! are refused: `auto` stays on the CPU there.
+//! are refused, and `auto` takes a GPU only when a small planet adapts there exactly as on the
+//! CPU (`reproduce.rs`): it stays on the CPU otherwise.
 
 mod adapt;
 mod buffers;
 mod collapse;
 mod compact;
+mod reproduce;
 mod select;
 mod spirv;
 mod split;
@@ -281,15 +283,21 @@ pub fn open_adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, String> {
     .map_err(|e| e.to_string())
 }
 
+pub use reproduce::reproduces_cpu;
+
 /// The GPU backend `backend` asks for (`None`: the CPU backend) and a line saying what was
-/// chosen and why. `auto` takes the GPU only when the adapter is a real GPU with `f64`.
+/// chosen and why. `auto` takes the GPU only when the adapter is a real GPU with `f64` whose
+/// meshes are the CPU's bit for bit ([`reproduces_cpu`]); `gpu` takes it anyway, saying so.
 pub fn select(backend: Backend) -> Result<(Option<Arc<GpuAdaption>>, String), GpuError> {
     match backend {
         Backend::Cpu => Ok((None, "adaption on the CPU (--backend cpu)".into())),
         Backend::Gpu => {
-            let gpu = GpuAdaption::new()?;
-            let line = format!("adaption on the GPU: {}", gpu.describe());
-            Ok((Some(Arc::new(gpu)), line))
+            let gpu = Arc::new(GpuAdaption::new()?);
+            let mut line = format!("adaption on the GPU: {}", gpu.describe());
+            if !gpu.is_cpu() && !reproduces_cpu(&gpu)? {
+                line += "; its meshes differ from the CPU's in the last bits";
+            }
+            Ok((Some(gpu), line))
         }
         Backend::Auto => {
             let adapter = match open_adapter(wgpu::Backends::PRIMARY) {
@@ -302,12 +310,20 @@ pub fn select(backend: Backend) -> Result<(Option<Arc<GpuAdaption>>, String), Gp
                     format!("adaption on the CPU: the adapter {} ({:?}) is itself a CPU", info.name, info.backend);
                 return Ok((None, line));
             }
-            match GpuAdaption::on(adapter) {
-                Ok(gpu) => {
-                    let line = format!("adaption on the GPU: {}", gpu.describe());
-                    Ok((Some(Arc::new(gpu)), line))
-                }
-                Err(e) => Ok((None, format!("adaption on the CPU: {e}"))),
+            let gpu = match GpuAdaption::on(adapter) {
+                Ok(gpu) => Arc::new(gpu),
+                Err(e) => return Ok((None, format!("adaption on the CPU: {e}"))),
+            };
+            match reproduces_cpu(&gpu) {
+                Ok(true) => Ok((Some(Arc::clone(&gpu)), format!("adaption on the GPU: {}", gpu.describe()))),
+                Ok(false) => Ok((
+                    None,
+                    format!(
+                        "adaption on the CPU: the GPU {} does not reproduce its meshes bit for bit",
+                        gpu.describe()
+                    ),
+                )),
+                Err(e) => Ok((None, format!("adaption on the CPU: the GPU {} failed ({e})", gpu.describe()))),
             }
         }
     }

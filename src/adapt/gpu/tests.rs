@@ -397,3 +397,10 @@ fn a_planet_with_other_parameters_adapts_alike() {
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }
 }
+
+/// The check `auto` makes of a real GPU before it adapts there: lavapipe rounds like the CPU,
+/// so its canary meshes are the CPU's.
+#[test]
+fn the_device_reproduces_the_cpus_canary() {
+    assert!(reproduces_cpu(&gpu()).unwrap());
+}
