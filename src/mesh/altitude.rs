@@ -82,9 +82,11 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
             (g, sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {
-            // A shore point: within a riverbank's height of sea level, its offset shrinking with
-            // the edge so that refining a shore flattens it instead of keeping metre-high steps
-            // over ever shorter distances.
+            // A shore point: the mean of its ends plus an offset of at most a riverbank's height
+            // that shrinks with the edge (refining a shore flattens it instead of keeping
+            // metre-high steps over ever shorter distances), no higher than a riverbank above
+            // sea level and no deeper than a river mouth's bed, so that the shore beside a mouth
+            // deepens towards it (an estuary) instead of standing as a wall over its bed.
             let rough = p.riverbed_edge_height_m.min(land_roughness(d.edge_length()));
             let g = (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
             (g, sea, VertexFlags::empty())
@@ -122,7 +124,8 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
-    // sea level. Beyond the paper, the ground may not rise faster than s_g from a wet
+    // sea level. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
+    // minimum would leave a bank under a higher river's floor). Beyond the paper, the ground may not rise faster than s_g from a wet
     // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
     // could stand any height above its river, and splitting such a wall copies its height to
     // the new vertex on the dry side, so the wall never shortens and refines without end.
@@ -142,8 +145,10 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     }
     let edge_len = d.edge_length();
 
-    // Eq. 10: a new river arm, when the new edge to a river vertex is long enough and an
-    // altitude exists above that river (by s_r) yet below every dry neighbour's bank.
+    // Eq. 10: a new river arm, when the split edge and the new edge to a river vertex are both
+    // at least l_rmin long and an altitude exists above that river (by s_r) yet below every dry
+    // neighbour's bank; the spring is drawn from the lower half of that range (our choice, so
+    // that arms start low rather than at the banks' tops).
     if edge_len >= p.min_river_length_m {
         let mut cap = f64::MAX;
         for (v, le) in around.iter().zip(lens) {
