@@ -116,6 +116,8 @@ pub struct AdaptStats {
     pub converged: bool,
     /// Factor applied to the target pixel sizes to respect `max_faces` (1 = not limited).
     pub lod_scale: f64,
+    /// Targets the face budget's search tried (0 without a budget).
+    pub trials: usize,
     /// Wall time per stage, milliseconds.
     pub stage_ms: StageTimes,
 }
@@ -328,13 +330,26 @@ impl Adapter {
     /// trials refine instead of starting over. From a fitting trial the next step comes from
     /// the faces added to the base mesh growing with the square of the inverse target size
     /// ([`Adapter::steps_to_fill`]), so one overshoot usually ends the search.
+    ///
+    /// Where an estimate is refuted, steps grow twofold from one trial to the next (finer from
+    /// a fitted mesh, coarser before any fits), so that even a camera whose targets fit only
+    /// ~130 steps coarser costs a dozen trials rather than a hundred.
     fn fit_budget(&mut self, cam: &Camera, max: usize, stats: &mut AdaptStats) -> i32 {
+        if max < self.base.faces.len() {
+            // No target fits; the base mesh is the coarsest there is.
+            self.set_mesh(self.base.clone());
+            stats.converged = false;
+            return MAX_STEP;
+        }
         let steps_for = |ratio: f64| (ratio.max(1.0).sqrt().ln() / BUDGET_STEP.ln()).ceil() as i32;
         let mut k = self.last_step.unwrap_or(PROBE_STEPS).clamp(0, MAX_STEP);
         let mut over: i32 = -1;
         let mut fits: Option<Fitted> = None;
         let mut first = true;
+        // The stride of the next refuted estimate: doubled by each.
+        let mut stride = 1;
         loop {
+            stats.trials += 1;
             let view = self.view(cam, k);
             // A finer trial from the fitted mesh is over the budget before it starts if the
             // fitted mesh's wanted splits alone would exceed it (no copy needed to know);
@@ -373,14 +388,13 @@ impl Adapter {
             } else {
                 over = k;
                 if k >= MAX_STEP {
-                    // Not even the coarsest target fits: a budget below the base mesh, or a
-                    // camera so close to the ground that even 1.25^130 coarser targets want
-                    // splits there. The base mesh is the coarsest mesh there is.
+                    // Not even the coarsest target fits: a camera so close to the ground that
+                    // even 1.25^130 coarser targets want splits there. The base mesh is the
+                    // coarsest mesh there is, and no step to start the next search from.
                     stats.converged = false;
-                    if self.base.faces.len() <= max {
-                        self.set_mesh(self.base.clone());
-                    }
-                    break;
+                    self.set_mesh(self.base.clone());
+                    self.last_step = None;
+                    return MAX_STEP;
                 }
                 if fits.as_ref().is_some_and(|f| f.step == over + 1) {
                     self.restore(fits.take().expect("a fitting mesh"));
@@ -389,8 +403,23 @@ impl Adapter {
                 }
             }
             k = match &fits {
-                Some(f) => (f.step - self.steps_to_fill(f.mesh.faces.len(), max)).clamp(over + 1, f.step - 1),
-                None => (k + steps_for(faces as f64 / max as f64).max(1)).min(MAX_STEP),
+                Some(f) => {
+                    let guess = f.step - self.steps_to_fill(f.mesh.faces.len(), max);
+                    if guess > over {
+                        stride = 1;
+                        guess.min(f.step - 1)
+                    } else {
+                        // The estimate is refuted (or says nothing, from the base mesh).
+                        let next = (over + stride).min(f.step - 1);
+                        stride *= 2;
+                        next
+                    }
+                }
+                None => {
+                    let next = k + steps_for(faces as f64 / max as f64).max(stride);
+                    stride *= 2;
+                    next.min(MAX_STEP)
+                }
             };
         }
         self.last_step = Some(k);
@@ -542,6 +571,11 @@ impl Adapter {
             }
             let ready = if over_cap { Vec::new() } else { selection.select(&self.mesh, &wants) };
             lap(&mut t, &mut stats.stage_ms.select);
+            // From a sub-refinement every ready split is in the target's mesh: if they would
+            // take it over the cap, that already proves it (and memory stays within the cap).
+            if refine_only && cap.is_some_and(|c| self.mesh.faces.len() - dead_faces + 2 * ready.len() > c) {
+                break;
+            }
             let answers = split::apply_splits(&mut self.mesh, &ready, &self.params, view);
             let splits = ready.len();
             state::record_splits(&mut wants, &ready, &answers);

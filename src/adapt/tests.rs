@@ -328,8 +328,17 @@ fn a_budget_below_the_base_mesh_is_refused() {
     let close = Camera::new(ground + up, ground + ahead * 10.0, None, 0.2, 16, 8192, 0.05, 0.05, R).unwrap();
     let mut a = Adapter::new(m.clone(), Params::default());
     let s = a.adapt(&close, Some(base_faces));
-    assert!(s.faces <= base_faces, "{s:?}");
+    assert!(s.faces <= base_faces && !s.converged, "{s:?}");
     assert!(canonical(a.mesh()) == canonical(m));
+    // The search strides to the coarsest step in a dozen trials, not one step at a time.
+    assert!(s.trials <= 12, "{s:?}");
+    // After it, with no step to start from, a budgeted view is found as from the base mesh.
+    let mut fresh = Adapter::new(m.clone(), Params::default());
+    let direct = fresh.adapt(&cam, Some(12_000));
+    let after = a.adapt(&cam, Some(12_000));
+    assert_eq!(after.lod_scale, direct.lod_scale);
+    assert!(canonical(a.mesh()) == canonical(fresh.mesh()));
+    assert!(after.trials <= direct.trials, "{after:?} vs {direct:?}");
 }
 
 #[test]

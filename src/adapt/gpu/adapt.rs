@@ -67,6 +67,10 @@ impl Adapter {
                 break;
             }
             let splits = if over_cap { 0 } else { ready };
+            // As on the CPU: a sub-refinement's ready splits are all in the target's mesh.
+            if refine_only && over(dm.lens.2 - dead_faces + 2 * splits) {
+                break;
+            }
             let collapse_step = !refine_only && (look_for_collapses || splits == 0);
             if splits == 0 && !collapse_step {
                 converged = true;
