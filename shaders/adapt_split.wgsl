@@ -312,7 +312,7 @@ fn riverbank_floor(v: Vertex, le: f64) -> f64 {
 // `least_steep`: the altitude whose steepest slope to the neighbours is least.
 fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
     var best_k = -F64_MAX;
-    var best = f64(0.0);
+    var best = g[0];
     for (var i = 0u; i < 4u; i++) {
         for (var j = 0u; j < 4u; j++) {
             if g[i] > g[j] {

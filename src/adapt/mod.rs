@@ -150,6 +150,8 @@ fn wishes_exceed(faces: usize, wants: &[bool], max: usize) -> bool {
 struct Fitted {
     step: i32,
     mesh: Mesh,
+    /// [`Adapter::ordered_faces`] of that mesh.
+    ordered_faces: usize,
     /// Its device copy on the GPU backend, so that finer trials start from a copy made on the
     /// device instead of an upload.
     #[cfg(feature = "gpu")]
@@ -211,10 +213,17 @@ impl Adapter {
         self
     }
 
-    /// Replaces the mesh, dropping the old one (and its device copy, unread).
-    fn set_mesh(&mut self, mesh: Mesh) {
+    /// Replaces the mesh, dropping the old one (and its device copy, unread); `ordered_faces`
+    /// is the new mesh's (see [`Adapter::ordered_faces`]).
+    fn set_mesh(&mut self, mesh: Mesh, ordered_faces: usize) {
         self.forget_device_mesh();
         self.mesh = mesh;
+        self.ordered_faces = ordered_faces;
+    }
+
+    /// Goes back to the base mesh.
+    fn reset_to_base(&mut self) {
+        self.set_mesh(self.base.clone(), self.base.faces.len());
     }
 
     /// Faces of the current mesh (slots, dead ones included), wherever it is.
@@ -333,11 +342,14 @@ impl Adapter {
     ///
     /// Where an estimate is refuted, steps grow twofold from one trial to the next (finer from
     /// a fitted mesh, coarser before any fits), so that even a camera whose targets fit only
-    /// ~130 steps coarser costs a dozen trials rather than a hundred.
+    /// ~130 steps coarser costs a dozen trials rather than a hundred. Between a step over the
+    /// budget and a fitted one, a trial that did not halve the range of steps left is followed
+    /// by a bisection, so a search where the estimate misleads (a budget the base mesh nearly
+    /// fills, where finer targets add a few faces each) still ends in a few dozen trials at most.
     fn fit_budget(&mut self, cam: &Camera, max: usize, stats: &mut AdaptStats) -> i32 {
         if max < self.base.faces.len() {
             // No target fits; the base mesh is the coarsest there is.
-            self.set_mesh(self.base.clone());
+            self.reset_to_base();
             stats.converged = false;
             return MAX_STEP;
         }
@@ -348,6 +360,8 @@ impl Adapter {
         let mut first = true;
         // The stride of the next refuted estimate: doubled by each.
         let mut stride = 1;
+        // The width of the range of steps left before the last trial, once there is a range.
+        let mut last_width: Option<i32> = None;
         loop {
             stats.trials += 1;
             let view = self.view(cam, k);
@@ -369,7 +383,7 @@ impl Adapter {
                 if !first {
                     match &fits {
                         Some(f) => self.resume_from(f),
-                        None => self.set_mesh(self.base.clone()),
+                        None => self.reset_to_base(),
                     }
                 }
                 // Later trials start from the base mesh or one that fitted a coarser target:
@@ -392,7 +406,7 @@ impl Adapter {
                     // even 1.25^130 coarser targets want splits there. The base mesh is the
                     // coarsest mesh there is, and no step to start the next search from.
                     stats.converged = false;
-                    self.set_mesh(self.base.clone());
+                    self.reset_to_base();
                     self.last_step = None;
                     return MAX_STEP;
                 }
@@ -404,20 +418,29 @@ impl Adapter {
             }
             k = match &fits {
                 Some(f) => {
+                    // The answer is in `over + 1 ..= f.step`: at least two steps here.
+                    let width = f.step - over;
                     let guess = f.step - self.steps_to_fill(f.mesh.faces.len(), max);
-                    if guess > over {
+                    let next = if last_width.is_some_and(|w| 2 * width > w) {
+                        // The last trial did not halve the range (the estimate is off, as
+                        // where finer targets add almost nothing): bisect.
+                        over + width / 2
+                    } else if guess > over {
                         stride = 1;
                         guess.min(f.step - 1)
                     } else {
-                        // The estimate is refuted (or says nothing, from the base mesh).
-                        let next = (over + stride).min(f.step - 1);
-                        stride *= 2;
+                        // The estimate is refuted (or says nothing, from the base mesh): steps
+                        // grow from the last step over the budget, up to the middle.
+                        let next = (over + stride).min(over + width / 2);
+                        stride = stride.saturating_mul(2);
                         next
-                    }
+                    };
+                    last_width = Some(width);
+                    next
                 }
                 None => {
-                    let next = k + steps_for(faces as f64 / max as f64).max(stride);
-                    stride *= 2;
+                    let next = k.saturating_add(steps_for(faces as f64 / max as f64).max(stride));
+                    stride = stride.saturating_mul(2);
                     next.min(MAX_STEP)
                 }
             };
@@ -435,6 +458,7 @@ impl Adapter {
         Fitted {
             step,
             mesh: std::mem::take(&mut self.mesh),
+            ordered_faces: self.ordered_faces,
             #[cfg(feature = "gpu")]
             device,
         }
@@ -442,14 +466,14 @@ impl Adapter {
 
     /// Starts a trial from a copy of the fitted mesh (and of its device copy).
     fn resume_from(&mut self, fitted: &Fitted) {
-        self.set_mesh(fitted.mesh.clone());
+        self.set_mesh(fitted.mesh.clone(), fitted.ordered_faces);
         #[cfg(feature = "gpu")]
         self.resume_device_mesh(&fitted.device);
     }
 
     /// Goes back to the fitted mesh, its device copy included.
     fn restore(&mut self, fitted: Fitted) {
-        self.set_mesh(fitted.mesh);
+        self.set_mesh(fitted.mesh, fitted.ordered_faces);
         #[cfg(feature = "gpu")]
         if self.gpu.is_some() {
             // (After a fall back to the CPU the kept device copy is dropped instead.)

@@ -315,6 +315,9 @@ fn a_budget_below_the_base_mesh_is_refused() {
         let s = a.adapt(&cam, Some(base_faces - 1));
         assert!(!s.converged && s.faces == base_faces, "{s:?}");
         assert!(canonical(a.mesh()) == canonical(&base().mesh));
+        // The base mesh is as ordered as it was at the start, so a mesh grown from it again
+        // is put in spatial order when it has doubled.
+        assert_eq!(a.ordered_faces, base_faces);
         // The base mesh's own size is a budget that can be met.
         let s = a.adapt(&cam, Some(base_faces));
         assert!(s.converged && s.faces == base_faces, "{s:?}");
@@ -339,6 +342,28 @@ fn a_budget_below_the_base_mesh_is_refused() {
     assert_eq!(after.lod_scale, direct.lod_scale);
     assert!(canonical(a.mesh()) == canonical(fresh.mesh()));
     assert!(after.trials <= direct.trials, "{after:?} vs {direct:?}");
+}
+
+#[test]
+fn a_budget_the_base_mesh_nearly_fills_is_found_by_bisection() {
+    // A kilometre above the ground, a budget of a few faces over the base mesh: the targets
+    // that fit add (almost) nothing, so no face count tells how far to go and the search halves
+    // its range instead of walking it a step at a time.
+    let cam = camera(0.0, 0.0, 1_000.0, 1_000.0, 6.0);
+    let base_faces = base().mesh.faces.len();
+    for max in [base_faces, base_faces + 1, base_faces + 30, base_faces + 300, base_faces + 3000] {
+        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        let s = a.adapt(&cam, Some(max));
+        assert!(s.converged && s.faces <= max, "{max}: {s:?}");
+        assert!(s.trials <= 20, "{max}: {s:?}");
+        // One step finer does not fit: the search found the finest target that does.
+        if s.lod_scale > 1.0 {
+            let mut finer = Adapter::new(base().mesh.clone(), Params::default());
+            let view = finer.view(&cam, (s.lod_scale.ln() / BUDGET_STEP.ln()).round() as i32 - 1);
+            let converged = finer.run(&view, Some(max), true, None, &mut AdaptStats::default());
+            assert!(!converged || finer.mesh().faces.len() > max, "{max}: {s:?}");
+        }
+    }
 }
 
 #[test]

@@ -41,9 +41,10 @@ pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
 /// distance)`: the bounds `ground ± k distance` meet for the smallest `k` at which the tightest
 /// pair touches (in one dimension, intervals that meet pairwise meet all together), and that
 /// point is the answer. Between two neighbours it interpolates, so a split of an edge steeper
-/// than s_g halves its height instead of copying one end's altitude.
+/// than s_g halves its height instead of copying one end's altitude. Neighbours all at one
+/// altitude give that altitude.
 fn least_steep(neighbours: &[(f64, f64); 4]) -> f64 {
-    let mut best = (f64::MIN, 0.0);
+    let mut best = (f64::MIN, neighbours[0].0);
     for &(gi, li) in neighbours {
         for &(gj, lj) in neighbours {
             if gi > gj {
@@ -202,4 +203,21 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     v.water = water;
     v.flags = VertexFlags::REFINED;
     (v, kinds)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::least_steep;
+
+    #[test]
+    fn least_steep_balances_the_steepest_pair() {
+        // Between a neighbour 100 m up at 10 m and one at 0 m, 30 m away, the point at 75 m
+        // climbs 2.5 m/m to both; the flat pair in between does not matter.
+        let g = least_steep(&[(100.0, 10.0), (0.0, 30.0), (60.0, 50.0), (40.0, 50.0)]);
+        assert!((g - 75.0).abs() < 1e-9, "{g}");
+        // The order of the neighbours does not matter.
+        assert_eq!(g, least_steep(&[(40.0, 50.0), (0.0, 30.0), (60.0, 50.0), (100.0, 10.0)]));
+        // Neighbours at one altitude give that altitude.
+        assert_eq!(least_steep(&[(-12.5, 3.0); 4]), -12.5);
+    }
 }
