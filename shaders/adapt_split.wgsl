@@ -173,8 +173,11 @@ fn lift(q: vec3<f64>, altitude: f64) -> vec3<f64> {
 }
 
 fn tangent_towards(src: vec3<f64>, dst: vec3<f64>) -> vec3<f64> {
-    let up = normalize3(src);
-    let d = dst - src;
+    return tangent_along(src, dst - src);
+}
+
+fn tangent_along(at: vec3<f64>, d: vec3<f64>) -> vec3<f64> {
+    let up = normalize3(at);
     let t = d - up * dot3(d, up);
     // glam's `normalize_or_zero`.
     let rcp = f64(1.0) / length3(t);
@@ -296,8 +299,9 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         up = vb;
         down = va;
     }
-    let tangent = tangent_code(tangent_towards(triple(up.pos), triple(down.pos)));
-    return new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED, tangent);
+    var v = new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED, 0u);
+    v.bits |= tangent_code(tangent_along(triple(v.pos), triple(down.pos) - triple(up.pos)));
+    return v;
 }
 
 fn is_wet(v: Vertex) -> bool {

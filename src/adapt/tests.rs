@@ -179,6 +179,11 @@ fn check_rivers(m: &Mesh) {
         }
         assert!(m.vertices[x as usize].flags.contains(VertexFlags::MOUTH), "river at {v} ends at {x}");
     }
+    // Downstream tangents lie in their vertex's tangent plane, within their code's resolution.
+    for v in m.vertices.iter().filter(|v| v.flags.contains(VertexFlags::RIVER)) {
+        let (t, up) = (v.tangent.get(), v.p().normalize());
+        assert!(t.dot(up).abs() < 2e-3, "tangent {t} at {up}: {}", t.dot(up));
+    }
     check_riverbanks(m);
 }
 

@@ -6,8 +6,8 @@
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
 use super::terrain::{
-    altitude_random, corner_directions, lift, split_position, split_seed, tangent_towards, weighted_position,
-    well_shaped_towards,
+    altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
+    weighted_position, well_shaped_towards,
 };
 use super::{split_kinds, Diamond, EdgeKind, Tangent, Vertex, VertexFlags};
 use crate::params::Params;
@@ -103,7 +103,8 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
     v.flags = flags | VertexFlags::REFINED;
     if edge.kind == EdgeKind::River {
         let (up, down) = if va.water >= vb.water { (va, vb) } else { (vb, va) };
-        v.tangent = Tangent::new(tangent_towards(up.p(), down.p()));
+        // Downstream along the split edge, in the new vertex's own tangent plane.
+        v.tangent = Tangent::new(tangent_along(v.p(), down.p() - up.p()));
     }
     (v, kinds)
 }

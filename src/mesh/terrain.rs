@@ -187,8 +187,13 @@ pub fn altitude_random(seed: u32) -> f64 {
 
 /// Unit vector from `from` towards `to`, projected onto the tangent plane at `from`.
 pub fn tangent_towards(from: DVec3, to: DVec3) -> DVec3 {
-    let up = from.normalize();
-    let d = to - from;
+    tangent_along(from, to - from)
+}
+
+/// The direction `d` projected onto the tangent plane at `at`, as a unit vector (zero where `d`
+/// is vertical there).
+pub fn tangent_along(at: DVec3, d: DVec3) -> DVec3 {
+    let up = at.normalize();
     (d - up * d.dot(up)).normalize_or_zero()
 }
 

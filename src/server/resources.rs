@@ -165,9 +165,10 @@ fn render(
 /// Revision of what the derived answers hold, for the same id, route and query: raised whenever
 /// a change to the software changes their bytes (revision 2: eq. 6 per side of the frustum, the
 /// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
-/// inside partly wet faces, and is double-sided), so that caches holding the old bytes under a
-/// strong, immutable `ETag` see a new one.
-const ANSWERS_REVISION: &str = "3";
+/// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
+/// own tangent plane), so that caches holding the old bytes under a strong, immutable `ETag` see
+/// a new one.
+const ANSWERS_REVISION: &str = "4";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.
