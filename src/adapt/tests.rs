@@ -241,9 +241,12 @@ fn check_riverbanks(m: &Mesh) {
             }
         }
     }
-    // Eq. 11's floor gives way where the slope limit (eq. 12) is lower still (see
-    // `continent_vertex`): up to 0.4 % of the refined banks in these tests, none in most.
-    assert!(under_floor * 100 <= banks, "{under_floor} of {banks} refined banks below eq. 11's floor");
+    // Eq. 11's floor is met against the river vertices a bank was made beside. It gives way
+    // where the slope limit (eq. 12) is lower still (see `continent_vertex`), and against a
+    // river vertex that a later split put nearer to the bank, its water interpolated between
+    // the river's ends (by ~0.7 m): none in most views, up to 1.3 % of the refined banks in
+    // 5,000 random camera paths.
+    assert!(under_floor * 100 <= banks * 3, "{under_floor} of {banks} refined banks below eq. 11's floor");
 }
 
 /// A camera `height` metres above base vertex `v` (above its ground), looking at a point
