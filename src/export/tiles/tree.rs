@@ -59,8 +59,9 @@ impl BaseTree {
             }
             for site in &sites {
                 midpoints.insert(pair(site.a, site.b), site.v);
-                mesh.collapse_vertex(site);
             }
+            // SAFETY: each site is its vertex's on this mesh, one per vertex.
+            unsafe { mesh.collapse_vertices(&sites) };
             alive.retain(|&v| !collapsed(&mesh, v));
         }
         let faces = base.faces.len() - 2 * midpoints.len();
