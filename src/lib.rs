@@ -13,6 +13,7 @@ pub mod bench_render;
 pub mod build;
 pub mod export;
 pub mod generate;
+pub mod geo;
 pub mod maps;
 pub mod mesh;
 pub mod params;

@@ -20,10 +20,24 @@ pub enum Climate {
     Frozen,
 }
 
-/// Table 2 of the paper.
+/// Where the parameters not given take their values from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Preset {
+    /// Earth-like altitudes and river gradients (the default): see [`Params::earth`].
+    #[default]
+    Earth,
+    /// The paper's Table 2 exactly: see [`Params::paper`].
+    Paper,
+}
+
+/// The parameters of a planet: the paper's Table 2 plus the preset they start from and the
+/// climate of the colours. Given fields override the preset's values.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
+    /// The preset the other fields' defaults come from.
+    pub preset: Preset,
     /// r: radius of the base sphere.
     pub radius_m: f64,
     /// Number of continents grown when no map is given.
@@ -59,8 +73,46 @@ pub struct Params {
 }
 
 impl Default for Params {
+    /// The `earth` preset.
     fn default() -> Params {
+        Params::earth()
+    }
+}
+
+impl Params {
+    /// The values of a preset.
+    pub fn preset(preset: Preset) -> Params {
+        match preset {
+            Preset::Earth => Params::earth(),
+            Preset::Paper => Params::paper(),
+        }
+    }
+
+    /// Earth-like values: the paper's shape with Earth's land hypsometry and river gradients.
+    /// Rivers spring at most 2.2 km above sea level and mountains reach 8.8 km, so that most
+    /// land lies a few hundred metres up; water surfaces fall at least 1 cm per km (the lower
+    /// Amazon falls 2-3 cm/km, the lower Mississippi ~4 cm/km); a great river's channel is some
+    /// 20 m deep at its mouth; and riverbanks rise 5 m plus 0.1 m per km above the water, as a
+    /// floodplain does. Land covers 29 % of a random planet, as on Earth.
+    pub fn earth() -> Params {
+        let sea = 3_000.0;
         Params {
+            preset: Preset::Earth,
+            land_percent: 29.0,
+            max_river_altitude_m: sea + 2_200.0,
+            max_mountain_altitude_m: sea + 8_800.0,
+            max_river_depth_m: 20.0,
+            min_river_slope_m_per_km: 0.01,
+            min_slope_near_river_m_per_km: 0.1,
+            riverbed_edge_height_m: 5.0,
+            ..Params::paper()
+        }
+    }
+
+    /// Table 2 of the paper.
+    pub fn paper() -> Params {
+        Params {
+            preset: Preset::Paper,
             radius_m: 6_371_000.0,
             continents: 6,
             land_percent: 50.0,
@@ -200,6 +252,7 @@ impl PlanetRequest {
         if !value.is_object() {
             return Err(body("expected a JSON object {\"seed\": N, \"params\": {...}}".into()));
         }
+        let value = with_preset_defaults(value);
         let req: PlanetRequest = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
@@ -211,18 +264,62 @@ impl PlanetRequest {
     }
 }
 
+/// Fills the fields a request's `params` leaves out from its `preset` (default `earth`). A
+/// `preset` that names none is left for the deserializer to refuse by name.
+fn with_preset_defaults(mut value: serde_json::Value) -> serde_json::Value {
+    let Some(params) = value.get_mut("params").and_then(|p| p.as_object_mut()) else {
+        return value;
+    };
+    let preset = match params.get("preset") {
+        None => Preset::Earth,
+        Some(p) => match serde_json::from_value::<Preset>(p.clone()) {
+            Ok(p) => p,
+            Err(_) => return value,
+        },
+    };
+    let serde_json::Value::Object(mut full) = serde_json::to_value(Params::preset(preset)).expect("params serialise")
+    else {
+        unreachable!("params serialise as an object")
+    };
+    for (k, v) in std::mem::take(params) {
+        full.insert(k, v);
+    }
+    *params = full;
+    value
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn defaults_are_the_papers_and_valid() {
-        let p = Params::default();
+    fn the_paper_preset_is_table_2_and_earth_is_the_default() {
+        let p = Params::paper();
         assert_eq!(p.radius_m, 6_371_000.0);
         assert_eq!(p.base_faces, 5000);
         assert_eq!(p.sea_level_m, 3000.0);
+        assert_eq!((p.max_river_altitude_m, p.max_mountain_altitude_m), (12_000.0, 13_000.0));
+        assert_eq!((p.max_river_depth_m, p.min_river_slope_m_per_km), (300.0, 1.0));
         assert_eq!(p.max_ground_slope_m_per_km, 1000.0);
         p.validate().unwrap();
+        let e = Params::default();
+        assert_eq!(e, Params::earth());
+        assert_eq!(e.preset, Preset::Earth);
+        assert_eq!(e.min_river_slope_m_per_km, 0.01);
+        e.validate().unwrap();
+    }
+
+    #[test]
+    fn a_preset_fills_what_the_request_leaves_out() {
+        let req = PlanetRequest::from_json(r#"{"params": {"preset": "paper", "continents": 3}}"#).unwrap();
+        assert_eq!(req.params, Params { continents: 3, ..Params::paper() });
+        let req = PlanetRequest::from_json(r#"{"params": {"max_river_depth_m": 50}}"#).unwrap();
+        assert_eq!(req.params, Params { max_river_depth_m: 50.0, ..Params::earth() });
+        // A stored request (every field given) reads back the same, whatever its preset.
+        let text = serde_json::to_string(&PlanetRequest { seed: 1, params: Params::paper() }).unwrap();
+        assert_eq!(PlanetRequest::from_json(&text).unwrap().params, Params::paper());
+        let e = PlanetRequest::from_json(r#"{"params": {"preset": "mars"}}"#).unwrap_err();
+        assert_eq!(e.field, "params.preset", "{e}");
     }
 
     #[test]
@@ -230,7 +327,7 @@ mod tests {
         let req = PlanetRequest::from_json(r#"{"seed": 7, "params": {"continents": 3}}"#).unwrap();
         assert_eq!(req.seed, 7);
         assert_eq!(req.params.continents, 3);
-        assert_eq!(req.params.land_percent, 50.0);
+        assert_eq!(req.params.land_percent, 29.0);
         let text = serde_json::to_string(&req).unwrap();
         assert_eq!(PlanetRequest::from_json(&text).unwrap(), req);
         assert_eq!(PlanetRequest::from_json("{}").unwrap().params, Params::default());

@@ -9,7 +9,7 @@ const R: f64 = 6_371_000.0;
 fn base() -> &'static crate::build::Planet {
     static P: OnceLock<crate::build::Planet> = OnceLock::new();
     P.get_or_init(|| {
-        let spec = PlanetSpec { seed: 3, params: Params { base_faces: 2000, ..Params::default() }, map: None };
+        let spec = PlanetSpec { seed: 3, params: Params { base_faces: 2000, ..Params::paper() }, map: None };
         build_planet(&spec, &mut |_, _| {}).unwrap()
     })
 }
@@ -51,7 +51,7 @@ fn canonical(m: &Mesh) -> Canonical {
 }
 
 fn adapted(cams: &[Camera]) -> (Mesh, AdaptStats) {
-    let mut a = Adapter::new(base().mesh.clone(), Params::default());
+    let mut a = Adapter::new(base().mesh.clone(), Params::paper());
     let mut s = AdaptStats::default();
     for c in cams {
         s = a.adapt(c, None);
@@ -90,7 +90,7 @@ fn same_mesh_whatever_the_path() {
     assert!(canonical(&direct) == canonical(&via_a), "meshes differ");
     // The terrain invariants hold after coarsening too (checked directly, not only through
     // the equality).
-    check_terrain(&via_a, &Params::default());
+    check_terrain(&via_a, &Params::paper());
     // Spatial order is a function of the mesh alone: both paths compact to equal buffers.
     let (mut direct, mut via_a) = (direct, via_a);
     direct.compact_in_spatial_order();
@@ -223,7 +223,7 @@ fn slopes_over_s_g(m: &Mesh, p: &Params) -> (usize, usize, f64) {
 /// stands above its water, and refined ones at least at eq. 11's floor.
 fn check_riverbanks(m: &Mesh) {
     let adj = m.adjacency();
-    let p = Params::default();
+    let p = Params::paper();
     let (mut banks, mut under_floor) = (0usize, 0usize);
     for (v, vert) in m.vertices.iter().enumerate() {
         if !vert.flags.contains(VertexFlags::RIVER) {
@@ -259,7 +259,7 @@ fn camera_over(m: &Mesh, v: u32, height: f64, ahead: f64) -> Camera {
 #[test]
 fn terrain_invariants_hold_over_rivers_of_many_planets() {
     for seed in 1..=8 {
-        let spec = PlanetSpec { seed, params: Params { base_faces: 2000, ..Params::default() }, map: None };
+        let spec = PlanetSpec { seed, params: Params { base_faces: 2000, ..Params::paper() }, map: None };
         let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
         let m = &planet.mesh;
         // The river vertex of median altitude: a view over a river's middle course.
@@ -272,11 +272,11 @@ fn terrain_invariants_hold_over_rivers_of_many_planets() {
         for (height, ahead) in [(150_000.0, 300_000.0), (5_000.0, 20_000.0)] {
             // Capped: terrain that refines without end (a wall that splits never shorten) fails
             // here instead of exhausting memory.
-            let mut a = Adapter::new(m.clone(), Params::default());
+            let mut a = Adapter::new(m.clone(), Params::paper());
             let view = a.view(&camera_over(m, v, height, ahead), 0);
             let converged = a.run(&view, Some(1_000_000), true, None, &mut AdaptStats::default());
             assert!(converged, "seed {seed}, {height} m: {} faces and still refining", a.mesh().faces.len());
-            check_terrain(a.mesh(), &Params::default());
+            check_terrain(a.mesh(), &Params::paper());
         }
     }
 }
@@ -284,10 +284,10 @@ fn terrain_invariants_hold_over_rivers_of_many_planets() {
 #[test]
 fn face_budget_is_respected_and_path_independent() {
     let cam = camera(10.0, 20.0, 50_000.0, 150_000.0, 1.0);
-    let mut a = Adapter::new(base().mesh.clone(), Params::default());
+    let mut a = Adapter::new(base().mesh.clone(), Params::paper());
     let s = a.adapt(&cam, Some(20_000));
     assert!(s.faces <= 20_000 && s.lod_scale > 1.0, "{s:?}");
-    let mut b = Adapter::new(base().mesh.clone(), Params::default());
+    let mut b = Adapter::new(base().mesh.clone(), Params::paper());
     b.adapt(&camera(40.0, -60.0, 100_000.0, 200_000.0, 3.0), None);
     b.adapt(&cam, Some(20_000));
     assert!(canonical(a.mesh()) == canonical(b.mesh()));
@@ -316,7 +316,7 @@ fn a_budget_below_the_base_mesh_is_refused() {
     // fresh or after a finer view.
     let cam = camera(10.0, 20.0, 50_000.0, 150_000.0, 1.0);
     for before in [None, Some(camera(12.0, 21.0, 3_000.0, 9_000.0, 1.0))] {
-        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        let mut a = Adapter::new(base().mesh.clone(), Params::paper());
         if let Some(b) = &before {
             a.adapt(b, None);
         }
@@ -337,14 +337,14 @@ fn a_budget_below_the_base_mesh_is_refused() {
     let (up, ground) = (v.p().normalize(), v.p().normalize() * (R + v.ground));
     let ahead = up.cross(DVec3::Z).normalize();
     let close = Camera::new(ground + up, ground + ahead * 10.0, None, 0.2, 16, 8192, 0.05, 0.05, R).unwrap();
-    let mut a = Adapter::new(m.clone(), Params::default());
+    let mut a = Adapter::new(m.clone(), Params::paper());
     let s = a.adapt(&close, Some(base_faces));
     assert!(s.faces <= base_faces && !s.converged, "{s:?}");
     assert!(canonical(a.mesh()) == canonical(m));
     // The search strides to the coarsest step in a dozen trials, not one step at a time.
     assert!(s.trials <= 12, "{s:?}");
     // After it, with no step to start from, a budgeted view is found as from the base mesh.
-    let mut fresh = Adapter::new(m.clone(), Params::default());
+    let mut fresh = Adapter::new(m.clone(), Params::paper());
     let direct = fresh.adapt(&cam, Some(12_000));
     let after = a.adapt(&cam, Some(12_000));
     assert_eq!(after.lod_scale, direct.lod_scale);
@@ -360,13 +360,13 @@ fn a_budget_the_base_mesh_nearly_fills_is_found_by_bisection() {
     let cam = camera(0.0, 0.0, 1_000.0, 1_000.0, 6.0);
     let base_faces = base().mesh.faces.len();
     for max in [base_faces, base_faces + 1, base_faces + 30, base_faces + 300, base_faces + 3000] {
-        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        let mut a = Adapter::new(base().mesh.clone(), Params::paper());
         let s = a.adapt(&cam, Some(max));
         assert!(s.converged && s.faces <= max, "{max}: {s:?}");
         assert!(s.trials <= 20, "{max}: {s:?}");
         // One step finer does not fit: the search found the finest target that does.
         if s.lod_scale > 1.0 {
-            let mut finer = Adapter::new(base().mesh.clone(), Params::default());
+            let mut finer = Adapter::new(base().mesh.clone(), Params::paper());
             let view = finer.view(&cam, (s.lod_scale.ln() / BUDGET_STEP.ln()).round() as i32 - 1);
             let converged = finer.run(&view, Some(max), true, None, &mut AdaptStats::default());
             assert!(!converged || finer.mesh().faces.len() > max, "{max}: {s:?}");
@@ -380,14 +380,14 @@ fn face_budget_takes_the_finest_target_that_fits_from_any_start() {
     let ground = camera(12.0, 21.0, 3_000.0, 9_000.0, 1.0);
     let base_faces = base().mesh.faces.len();
     for max in [base_faces + 500, 12_000, 40_000] {
-        let mut a = Adapter::new(base().mesh.clone(), Params::default());
+        let mut a = Adapter::new(base().mesh.clone(), Params::paper());
         let s = a.adapt(&cam, Some(max));
         assert!(s.converged && s.faces <= max, "{max}: {s:?}");
         let k = (s.lod_scale.ln() / BUDGET_STEP.ln()).round() as i32;
         assert!((BUDGET_STEP.powi(k) - s.lod_scale).abs() < 1e-9);
         // The mesh is the converged mesh of step k, and step k - 1 does not fit.
         let converge = |step: i32| {
-            let mut b = Adapter::new(base().mesh.clone(), Params::default());
+            let mut b = Adapter::new(base().mesh.clone(), Params::paper());
             let view = b.view(&cam, step);
             assert!(b.run(&view, None, false, None, &mut AdaptStats::default()));
             b.mesh
@@ -398,7 +398,7 @@ fn face_budget_takes_the_finest_target_that_fits_from_any_start() {
         }
         // The same mesh after a finer budgeted view, an unbudgeted ground view, or twice.
         for before in [Some(max * 3), None] {
-            let mut c = Adapter::new(base().mesh.clone(), Params::default());
+            let mut c = Adapter::new(base().mesh.clone(), Params::paper());
             c.adapt(&ground, before);
             let s2 = c.adapt(&cam, Some(max));
             assert_eq!(s2.lod_scale, s.lod_scale);
@@ -434,7 +434,7 @@ fn buffers_grow_and_shrink_with_the_papers_slack() {
     };
     // Large enough that doubling a buffer overshoots the slack many times over.
     let cam = camera(10.0, 20.0, 300_000.0, 600_000.0, 0.5);
-    let mut a = Adapter::new(base().mesh.clone(), Params::default());
+    let mut a = Adapter::new(base().mesh.clone(), Params::paper());
     a.adapt(&cam, None);
     assert!(a.mesh().faces.len() > 8 * N_ALLOC, "{} faces", a.mesh().faces.len());
     within(a.mesh(), "refined");
@@ -447,7 +447,7 @@ fn buffers_grow_and_shrink_with_the_papers_slack() {
 fn adaption_reaches_the_minimum_edge_length_at_earth_radius() {
     // A 0.2° view from 20 m above a land vertex wants edges far below the 1 cm minimum
     // (Table 2) inside its frustum, a spot some 10 cm across.
-    let params = Params::default();
+    let params = Params::paper();
     let m = &base().mesh;
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let (up, ground) = (v.p().normalize(), v.p().normalize() * (R + v.ground));
@@ -520,12 +520,12 @@ mod paths {
             last in cam_strategy(),
             max in budget_strategy(),
         ) {
-            let mut via = Adapter::new(base().mesh.clone(), Params::default());
+            let mut via = Adapter::new(base().mesh.clone(), Params::paper());
             for (cam, budget) in &path {
                 via.adapt(cam, *budget);
             }
             let s1 = via.adapt(&last, max);
-            let mut direct = Adapter::new(base().mesh.clone(), Params::default());
+            let mut direct = Adapter::new(base().mesh.clone(), Params::paper());
             let s2 = direct.adapt(&last, max);
             prop_assert!(s1.converged && s2.converged);
             prop_assert_eq!(s1.lod_scale, s2.lod_scale);
@@ -551,7 +551,7 @@ mod paths {
 fn centimetre_edges_at_earth_radius() {
     // Refine around one land point with the adaption split rules until edges are ~1 cm: the
     // f64 positions keep every vertex distinct and every face properly oriented.
-    let params = Params::default();
+    let params = Params::paper();
     let mut m = base().mesh.clone();
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;

@@ -6,17 +6,7 @@ use crate::mesh::{EdgeKind, FaceKind, Mesh, VertexFlags};
 use crate::rng::Sequence;
 use glam::DVec3;
 
-/// Latitude and longitude in degrees of a planet-centred point (+Z north, longitude 0 on +X).
-pub fn lat_lon(p: DVec3) -> (f64, f64) {
-    let n = p.normalize();
-    (n.z.clamp(-1.0, 1.0).asin().to_degrees(), n.y.atan2(n.x).to_degrees())
-}
-
-/// Unit direction of a latitude/longitude in degrees.
-pub fn direction(lat_deg: f64, lon_deg: f64) -> DVec3 {
-    let (lat, lon) = (lat_deg.to_radians(), lon_deg.to_radians());
-    DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin())
-}
+pub use crate::geo::{direction, lat_lon};
 
 /// Centroid of a face.
 pub fn face_centre(mesh: &Mesh, f: u32) -> DVec3 {
@@ -95,22 +85,76 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
     land / total
 }
 
+/// An elevation map's water below sea level that reaches this deep is sea even where the map
+/// lost its strait to the ocean (the Black Sea's Bosporus at 20 km pixels). No land depression
+/// is as deep: the lowest continental floor, Lake Baikal's, lies 1,186 m below sea level, the
+/// Caspian's 1,025 m.
+pub const OCEAN_DEPTH_M: f32 = -1500.0;
+
 /// Labels faces from a map: land where the map says so at the face centre; sea outside the
-/// map's bounds and where it has no data.
+/// map's bounds and where it has no data. On an elevation map, ground below sea level is sea
+/// only where it joins the ocean: the largest body of sea faces, the sea outside the map's
+/// bounds, or a body reaching [`OCEAN_DEPTH_M`]; elsewhere (the Caspian, the Qattara
+/// Depression) it is land, and the rivers make it a lake or drain it.
 pub fn from_map(mesh: &mut Mesh, map: &Map) {
-    let kinds: Vec<FaceKind> = (0..mesh.faces.len() as u32)
+    let samples: Vec<Option<f32>> = (0..mesh.faces.len() as u32)
         .map(|f| {
             let (lat, lon) = lat_lon(face_centre(mesh, f));
-            match map.sample(lat, lon) {
-                Some(v) if is_land(map.kind, v) => FaceKind::Land,
-                _ => FaceKind::Sea,
-            }
+            map.sample(lat, lon)
         })
         .collect();
+    let mut kinds: Vec<FaceKind> = samples
+        .iter()
+        .map(|s| match s {
+            Some(v) if is_land(map.kind, *v) => FaceKind::Land,
+            _ => FaceKind::Sea,
+        })
+        .collect();
+    if map.kind == MapKind::Elevation {
+        inland_basins_to_land(mesh, &samples, &mut kinds);
+    }
     for (f, k) in kinds.into_iter().enumerate() {
         mesh.set_face_kind(f as u32, k);
     }
     classify(mesh);
+}
+
+/// Turns bodies of sea faces (joined through edges) that do not join the ocean into land.
+fn inland_basins_to_land(mesh: &Mesh, samples: &[Option<f32>], kinds: &mut [FaceKind]) {
+    let nf = kinds.len();
+    let mut body = vec![u32::MAX; nf];
+    let mut bodies: Vec<(f64, bool)> = Vec::new(); // (area, joins the ocean)
+    let mut stack = Vec::new();
+    for start in 0..nf {
+        if kinds[start] != FaceKind::Sea || body[start] != u32::MAX {
+            continue;
+        }
+        let id = bodies.len() as u32;
+        let (mut area, mut ocean) = (0.0, false);
+        body[start] = id;
+        stack.push(start as u32);
+        while let Some(f) = stack.pop() {
+            area += mesh.face_area_vector(f).length();
+            ocean |= samples[f as usize].is_none_or(|v| v <= OCEAN_DEPTH_M);
+            for &e in &mesh.faces[f as usize].e {
+                let edge = &mesh.edges[e as usize];
+                let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+                if kinds[g as usize] == FaceKind::Sea && body[g as usize] == u32::MAX {
+                    body[g as usize] = id;
+                    stack.push(g);
+                }
+            }
+        }
+        bodies.push((area, ocean));
+    }
+    if let Some(largest) = (0..bodies.len()).max_by(|&a, &b| bodies[a].0.total_cmp(&bodies[b].0)) {
+        bodies[largest].1 = true;
+    }
+    for f in 0..nf {
+        if kinds[f] == FaceKind::Sea && !bodies[body[f] as usize].1 {
+            kinds[f] = FaceKind::Land;
+        }
+    }
 }
 
 /// Whether a map value means land: half white in a bitmap, at or above sea level in metres.

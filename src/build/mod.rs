@@ -1,7 +1,9 @@
 //! Planet generation (paper §4): base shape, continents and initial river networks.
 
 pub mod continents;
+pub mod fidelity;
 pub mod network;
+pub mod relief;
 pub mod rivers;
 pub mod shape;
 
@@ -46,6 +48,14 @@ pub struct Stats {
     pub monotone_violations: usize,
     pub bytes_per_vertex: f64,
     pub build_ms: f64,
+    /// Elevation maps: depressions of the map kept as lakes and breached as artefacts.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lakes: Option<usize>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub breached_depressions: Option<usize>,
+    /// Elevation maps: the planet's ground against the map (see [`fidelity`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map_fidelity: Option<fidelity::MapFidelity>,
 }
 
 /// Why a planet could not be built from its inputs.
@@ -68,13 +78,27 @@ impl BuildError {
     }
 }
 
-/// Refinement edge length a map needs, in map pixels: about six pixels per face.
+/// Refinement edge length a map needs, in map pixels: nine for a continent bitmap (a coast
+/// needs no finer), four for an elevation map, whose heights the mesh must keep.
 const PIXELS_PER_EDGE: f64 = 9.0;
+const ELEVATION_PIXELS_PER_EDGE: f64 = 4.0;
+/// Refinement edges inside a map's bounds are no shorter than what gives the bounds about this
+/// many faces before mountains are inserted (which about quadruples them): a global map finer
+/// than 2048 pixels across gets the mesh of one at 2048 (~170 km refinement edges), not one
+/// that grows with the map's size.
+const MAP_FACES: f64 = 75_000.0;
 
-/// Target edge length (m) to honour a map's detail: a few pixels per edge.
+/// Target edge length (m) to honour a map's detail: a few pixels per edge, within the bounds'
+/// share of [`MAP_FACES`].
 pub fn map_edge_length(map: &Map, radius: f64) -> f64 {
     let (_, dlat) = map.pixel_size_deg();
-    PIXELS_PER_EDGE * dlat.to_radians() * radius
+    let per_edge = if map.kind == MapKind::Elevation { ELEVATION_PIXELS_PER_EDGE } else { PIXELS_PER_EDGE };
+    let b = map.bounds;
+    let area =
+        (b.east - b.west).to_radians() * (b.north.to_radians().sin() - b.south.to_radians().sin()) * radius * radius;
+    // A face under its refinement edge L covers about L²/4.
+    let floor = (4.0 * area / MAP_FACES).sqrt();
+    (per_edge * dlat.to_radians() * radius).max(floor)
 }
 
 /// Builds the base mesh of a planet (§4). `progress` receives a stage name and a fraction.
@@ -110,8 +134,13 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         }
     }
     progress("rivers", 0.4);
-    let relief = spec.map.as_deref().filter(|m| m.kind == MapKind::Elevation);
-    rivers::build_rivers(&mut mesh, p, relief, spec.seed);
+    // Vertices sample the map averaged over about their spacing (a third of the refinement edge).
+    let relief = spec.map.as_deref().filter(|m| m.kind == MapKind::Elevation).map(|m| {
+        let (_, dlat) = m.pixel_size_deg();
+        let edge_px = map_edge_length(m, p.radius_m) / (dlat.to_radians() * p.radius_m);
+        m.box_filtered((edge_px / 3.0) as u32)
+    });
+    let report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     let graph = RiverGraph::from_mesh(&mesh);
@@ -126,8 +155,12 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         drained_fraction: graph.drained_fraction(&mesh),
         monotone_violations: graph.monotone_violations,
         bytes_per_vertex: mesh.bytes_per_vertex(),
-        build_ms: start.elapsed().as_secs_f64() * 1000.0,
+        build_ms: 0.0,
+        lakes: relief.as_ref().map(|_| report.lakes),
+        breached_depressions: relief.as_ref().map(|_| report.breached),
+        map_fidelity: spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m)),
     };
+    let stats = Stats { build_ms: start.elapsed().as_secs_f64() * 1000.0, ..stats };
     progress("done", 1.0);
     Ok(Planet { mesh, rivers: graph, stats })
 }

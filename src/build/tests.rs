@@ -15,7 +15,7 @@ fn random_planet_is_valid_and_reproducible() {
     let c = planet(43, 5000);
     assert_ne!(a.mesh, c.mesh);
     let s = &a.stats;
-    assert!((s.land_fraction - 0.5).abs() < 0.08, "land {}", s.land_fraction);
+    assert!((s.land_fraction - 0.29).abs() < 0.06, "land {}", s.land_fraction);
     assert!(s.continents >= 1 && s.continents <= 6, "{}", s.continents);
     assert!(s.river_mouths > 0 && s.river_edges > s.river_mouths);
     assert!(s.faces >= 5000);

@@ -39,6 +39,16 @@ impl GeoBounds {
         Ok(b)
     }
 
+    /// Latitude (degrees) of the centres of row `row` of `height` rows over the bounds.
+    pub fn lat_of(&self, row: u32, height: u32) -> f64 {
+        self.north - (row as f64 + 0.5) * (self.north - self.south) / height as f64
+    }
+
+    /// Longitude (degrees) of the centres of column `col` of `width` columns over the bounds.
+    pub fn lon_of(&self, col: u32, width: u32) -> f64 {
+        self.west + (col as f64 + 0.5) * (self.east - self.west) / width as f64
+    }
+
     /// Check that all edges are finite, west < east, south < north and everything lies within
     /// ±180° longitude and ±90° latitude.
     pub fn validate(&self) -> Result<(), MapError> {

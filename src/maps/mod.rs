@@ -320,6 +320,46 @@ impl Map {
         }
     }
 
+    /// The map box-averaged over blocks of `k` x `k` pixels (nodata left out of each block; a
+    /// block of nodata stays nodata), over the same bounds, with `k` the largest divisor of both
+    /// sides up to `max_k` (1 gives a copy). Vertices spaced several pixels apart sample this
+    /// instead of single pixels, so they stand for the ground around them rather than alias the
+    /// map's finest detail.
+    pub fn box_filtered(&self, max_k: u32) -> Map {
+        let k = (1..=max_k.max(1))
+            .rev()
+            .find(|&k| self.width.is_multiple_of(k) && self.height.is_multiple_of(k))
+            .unwrap_or(1);
+        if k == 1 {
+            return self.clone();
+        }
+        let (w, h) = (self.width / k, self.height / k);
+        let src_w = self.width as usize;
+        let values: Vec<f32> = (0..h as usize)
+            .into_par_iter()
+            .flat_map_iter(|r| {
+                (0..w as usize).map(move |c| {
+                    let (mut sum, mut count) = (0.0f64, 0u32);
+                    for rr in r * k as usize..((r + 1) * k as usize).min(self.height as usize) {
+                        for cc in c * k as usize..((c + 1) * k as usize).min(src_w) {
+                            let v = self.values[rr * src_w + cc];
+                            if !v.is_nan() {
+                                sum += f64::from(v);
+                                count += 1;
+                            }
+                        }
+                    }
+                    if count == 0 {
+                        f32::NAN
+                    } else {
+                        (sum / f64::from(count)) as f32
+                    }
+                })
+            })
+            .collect();
+        Map { kind: self.kind, width: w, height: h, bounds: self.bounds, values }
+    }
+
     /// Area-weighted share of valid pixels that are land (see [`Map::is_land_value`]);
     /// 0 when no pixel is valid. Rows are weighted by their exact area on the sphere.
     pub fn land_fraction(&self) -> f64 {

@@ -20,6 +20,7 @@ mod kinds;
 mod order;
 mod packed;
 pub mod prefetch;
+pub mod raster;
 mod split;
 pub mod terrain;
 pub mod validate;

@@ -15,7 +15,7 @@ const R: f64 = 6_371_000.0;
 fn planet() -> &'static Planet {
     static P: OnceLock<Planet> = OnceLock::new();
     P.get_or_init(|| {
-        let spec = PlanetSpec { seed: 7, params: Params { base_faces: 4000, ..Params::default() }, map: None };
+        let spec = PlanetSpec { seed: 7, params: Params { base_faces: 4000, ..Params::paper() }, map: None };
         build_planet(&spec, &mut |_, _| {}).unwrap()
     })
 }
@@ -31,7 +31,7 @@ fn gpu() -> Arc<GpuAdaption> {
 }
 
 fn view(cam: &Camera) -> View {
-    let p = Params::default();
+    let p = Params::paper();
     View::new(cam, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(&p, &crate::mesh::Mesh::default()))
 }
 
@@ -94,7 +94,7 @@ fn assert_same_mesh(cpu: &Mesh, dev: &Mesh, what: &str) {
 
 /// A camera `height` m above the ground at (lat, lon) looking `ahead` m along the ground to the north.
 fn ground(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
-    let sea = Params::default().sea_level_m;
+    let sea = Params::paper().sea_level_m;
     let dir = crate::build::continents::direction(lat, lon);
     let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
     let eye = dir * (R + sea + height);
@@ -112,10 +112,10 @@ fn vulkan_runs_the_shaders_without_fused_multiply_adds() {
 
 #[test]
 fn a_fly_through_adapts_to_the_same_meshes_on_both_backends() {
-    let sea = Params::default().sea_level_m;
+    let sea = Params::paper().sea_level_m;
     let cams = crate::bench_adapt::fly_through(R, sea, 12.0, 30.0, 20);
-    let mut cpu = Adapter::new(planet().mesh.clone(), Params::default());
-    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    let mut cpu = Adapter::new(planet().mesh.clone(), Params::paper());
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(gpu()));
     for (i, cam) in cams.iter().enumerate() {
         // Decisions on the mesh of the previous camera, then the whole adaption.
         same_wants(cpu.mesh(), cam);
@@ -160,14 +160,14 @@ fn metre_edges_by_the_eye_are_decided_alike_at_earth_radius() {
         R,
     )
     .unwrap();
-    let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+    let mut a = Adapter::new(planet().mesh.clone(), Params::paper());
     a.adapt(&cam, Some(400_000));
     let mesh = a.mesh();
     let shortest = (0..mesh.edges.len() as u32).map(|e| mesh.edge_length(e)).fold(f64::MAX, f64::min);
     assert!(shortest < 2.0, "the view did not refine to metre edges ({shortest} m)");
     same_wants(mesh, &cam);
     // And the adaption itself, from the base mesh, on the device.
-    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(gpu()));
     dev.adapt(&cam, Some(400_000));
     assert!(dev.on_gpu(), "the GPU backend fell back to the CPU");
     assert_same_mesh(mesh, dev.mesh(), "metre edges");
@@ -197,7 +197,7 @@ proptest! {
         lat2 in -80.0f64..80.0, lon2 in -180.0f64..180.0, px in 0.5f64..8.0,
     ) {
         let first = ground(lat2, lon2, 10f64.powf(5.0), 2e5, 4.0);
-        let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+        let mut a = Adapter::new(planet().mesh.clone(), Params::paper());
         a.adapt(&first, Some(40_000));
         let h = 10f64.powf(log_h);
         same_wants(a.mesh(), &ground(lat, lon, h, h * 3.0 + 100.0, px));
@@ -216,8 +216,8 @@ proptest! {
     ) {
         let h = 10f64.powf(log_h);
         let cams = [ground(lat2, lon2, 1e5, 2e5, 4.0), ground(lat, lon, h, h * 3.0 + 100.0, px)];
-        let mut cpu = Adapter::new(planet().mesh.clone(), Params::default());
-        let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+        let mut cpu = Adapter::new(planet().mesh.clone(), Params::paper());
+        let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(gpu()));
         for (i, cam) in cams.iter().enumerate() {
             let a = cpu.adapt(cam, Some(40_000));
             let b = dev.adapt(cam, Some(40_000));
@@ -233,8 +233,8 @@ fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
     // Enough collapses in one run that the holes are squeezed out mid-run (more than
     // `N_ALLOC` dead faces), then decided again, on both backends.
     let cams = [ground(20.0, 10.0, 50.0, 500.0, 1.0), ground(-30.0, 120.0, 2e7, 3e7, 4.0)];
-    let mut cpu = Adapter::new(planet().mesh.clone(), Params::default());
-    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(gpu()));
+    let mut cpu = Adapter::new(planet().mesh.clone(), Params::paper());
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(gpu()));
     for (i, cam) in cams.iter().enumerate() {
         let a = cpu.adapt(cam, Some(250_000));
         let b = dev.adapt(cam, Some(250_000));
@@ -250,7 +250,7 @@ fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
 /// A refined mesh with holes: every vertex a far camera lets collapse, collapsed once; and the
 /// number of collapses.
 fn mesh_with_holes() -> (Mesh, usize) {
-    let mut a = Adapter::new(planet().mesh.clone(), Params::default());
+    let mut a = Adapter::new(planet().mesh.clone(), Params::paper());
     a.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), Some(60_000));
     let mut mesh = a.mesh().clone();
     let far = view(&ground(-40.0, -100.0, 1e7, 2e7, 4.0));
@@ -300,7 +300,7 @@ fn the_device_copy_follows_the_spatial_order_of_the_host() {
     assert_eq!(mesh.faces, dev.faces);
 
     // Between cameras an adapter orders its mesh and keeps the device copy, which follows.
-    let mut dev = Adapter::new(planet().mesh.clone(), Params::default()).with_gpu(Some(g.clone()));
+    let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(g.clone()));
     dev.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), None);
     assert!(crate::adapt::compact::scattered(dev.mesh.faces.len(), dev.ordered_faces));
     dev.order();
@@ -375,7 +375,7 @@ fn a_planet_with_other_parameters_adapts_alike() {
         min_slope_near_river_m_per_km: 7.0,
         riverbed_edge_height_m: 4.0,
         max_ground_slope_m_per_km: 640.0,
-        ..Params::default()
+        ..Params::paper()
     };
     params.validate().unwrap();
     let planet = build_planet(&PlanetSpec { seed: 11, params: params.clone(), map: None }, &mut |_, _| {}).unwrap();
