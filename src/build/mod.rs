@@ -189,3 +189,5 @@ fn face_touches(mesh: &Mesh, f: u32, bounds: &crate::maps::GeoBounds) -> bool {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_relief;

@@ -8,7 +8,7 @@
 //! tools do (Lindsay 2016, least-cost breaching), the levels follow the map instead:
 //!
 //! 1. The fill level `F` of every vertex is the highest altitude on its way to the sea (the
-//!    flood's spill level). Vertices with `F` above their own altitude lie in a depression;
+//!    flood's spill level), both measured on the ground the flood was ordered by. Vertices with `F` above their own altitude lie in a depression;
 //!    depressions are the connected pieces of the flood tree at one spill level.
 //! 2. A depression at most [`BREACH_DEPTH_M`] deep, or covering no more than about two map
 //!    pixels, is an artefact of the map's sampling: it is *breached*, the channel cut through its
@@ -40,12 +40,14 @@ pub struct Levels {
 
 /// The flood tree and the map over it: `order` lists the inland river vertices downstream
 /// first, `downstream[v]`/`edge_len[v]` the vertex each drains to and the length of that edge,
-/// `height[v]` the map's altitude (m relative to sea level; coast vertices drain nowhere and
-/// stand at 0), `area[v]` the area a vertex stands for.
+/// `route[v]` the altitude the flood ordered it by (the lowest ground around it) and
+/// `height[v]` the altitude of its water before carving (m relative to sea level; coast
+/// vertices drain nowhere and stand at 0), `area[v]` the area a vertex stands for.
 pub struct Flood<'a> {
     pub order: &'a [u32],
     pub downstream: &'a [u32],
     pub edge_len: &'a [f64],
+    pub route: &'a [f64],
     pub height: &'a [f64],
     pub area: &'a [f64],
     /// Least area of a kept depression (m²): about two map pixels.
@@ -57,7 +59,7 @@ pub struct Flood<'a> {
 /// Water levels and lakes of a relief map's network (see the module doc).
 pub fn levels(flood: &Flood) -> Levels {
     let n = flood.height.len();
-    let Flood { order, downstream, edge_len, height, area, .. } = *flood;
+    let Flood { order, downstream, edge_len, route, height, area, .. } = *flood;
     // 1. Fill levels and depressions: pieces of the tree at one spill level above the map.
     let mut fill = vec![0.0f64; n];
     let mut comp = vec![NONE; n];
@@ -66,18 +68,18 @@ pub fn levels(flood: &Flood) -> Levels {
     let mut size: Vec<f64> = Vec::new();
     for &v in order {
         let (v, u) = (v as usize, downstream[v as usize] as usize);
-        fill[v] = height[v].max(fill[u]);
-        if fill[v] > height[v] {
+        fill[v] = route[v].max(fill[u]);
+        if fill[v] > route[v] {
             let c = if comp[u] != NONE && fill[u] == fill[v] {
                 comp[u]
             } else {
                 spill.push(fill[v]);
-                floor.push(height[v]);
+                floor.push(route[v]);
                 size.push(0.0);
                 spill.len() as u32 - 1
             };
             comp[v] = c;
-            floor[c as usize] = floor[c as usize].min(height[v]);
+            floor[c as usize] = floor[c as usize].min(route[v]);
             size[c as usize] += area[v];
         }
     }
@@ -129,6 +131,7 @@ mod tests {
             order: &order,
             downstream: &downstream,
             edge_len: &edge_len,
+            route: height,
             height,
             area: &area,
             min_lake_area_m2: 1.5e8,

@@ -16,6 +16,9 @@ use std::collections::BinaryHeap;
 
 use super::continents::lat_lon;
 
+/// Radius of the window (in pixels of the sampled map) whose lowest ground routes a vertex.
+const ROUTE_RADIUS_PX: u32 = 1;
+
 /// Sea-floor slope away from the coast for planets without a relief map (m per m).
 const SHELF_SLOPE: f64 = 0.01;
 
@@ -123,8 +126,21 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     let mut joined = vec![false; n];
     let mut tributaries = vec![0u8; n];
     let mut order: Vec<u32> = Vec::new();
+    // Water finds its way through the lowest ground around a vertex (the map's pixels within
+    // one of the sampled map's pixels, about the vertices' spacing): a gorge narrower than the
+    // mesh still carries its river (the Congo through the Crystal Mountains, not out through
+    // Gabon; the Nile to the Mediterranean, not the Red Sea).
+    let route: Vec<Option<f64>> = match relief {
+        Some(map) => (0..n as u32)
+            .map(|v| {
+                let (lat, lon) = lat_lon(mesh.pos(v));
+                map.sample_min(lat, lon, ROUTE_RADIUS_PX).map(f64::from)
+            })
+            .collect(),
+        None => Vec::new(),
+    };
     let key_of = |rng: &mut Sequence, from: u32, to: u32| match relief {
-        Some(_) => (elevation[to as usize].unwrap_or(0.0), elevation[from as usize].unwrap_or(-1e9)),
+        Some(_) => (route[to as usize].unwrap_or(0.0), route[from as usize].unwrap_or(-1e9)),
         None => (rng.unit(), 0.0),
     };
     let mut heap = BinaryHeap::new();
@@ -204,6 +220,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     // --- Levels on a relief map: breached or kept depressions, water below the map ---
     let p = params;
     let relief_levels = relief.map(|map| {
+        let route: Vec<f64> = (0..n).map(|v| if coast[v] { 0.0 } else { route[v].unwrap_or(0.0) }).collect();
         let height: Vec<f64> = (0..n)
             .map(|v| if coast[v] { 0.0 } else { valley_floor(mesh, &adj, map, v as u32, elevation[v], p) })
             .collect();
@@ -218,6 +235,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
             order: &order,
             downstream: &downstream,
             edge_len: &edge_of,
+            route: &route,
             height: &height,
             area: &area,
             min_lake_area_m2: 2.0 * pixel * pixel,

@@ -320,6 +320,33 @@ impl Map {
         }
     }
 
+    /// The lowest valid value within `radius` pixels (a square window) of the pixel holding a
+    /// point, or None where [`Map::sample`] has none. A vertex standing for ground several
+    /// pixels wide drains through the lowest ground around it: a gorge narrower than the
+    /// vertices' spacing still carries its river.
+    pub fn sample_min(&self, lat_deg: f64, lon_deg: f64, radius: u32) -> Option<f32> {
+        self.sample(lat_deg, lon_deg)?;
+        let b = &self.bounds;
+        let (dx, dy) = self.pixel_size_deg();
+        let (w, h) = (self.width as i64, self.height as i64);
+        let col = ((b.unwrap_lon(lon_deg) - b.west) / dx).floor() as i64;
+        let row = ((b.north - lat_deg) / dy).floor() as i64;
+        let r = i64::from(radius);
+        let mut low = f32::INFINITY;
+        for rr in (row - r).max(0)..=(row + r).min(h - 1) {
+            for cc in col - r..=col + r {
+                let cc = if b.spans_all_longitudes() { cc.rem_euclid(w) } else { cc };
+                if (0..w).contains(&cc) {
+                    let v = self.values[(rr * w + cc) as usize];
+                    if v < low {
+                        low = v;
+                    }
+                }
+            }
+        }
+        low.is_finite().then_some(low)
+    }
+
     /// The map box-averaged over blocks of `k` x `k` pixels (nodata left out of each block; a
     /// block of nodata stays nodata), over the same bounds, with `k` the largest divisor of both
     /// sides up to `max_k` (1 gives a copy). Vertices spaced several pixels apart sample this
