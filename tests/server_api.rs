@@ -222,7 +222,10 @@ async fn builtin_earth_becomes_ready_and_cannot_be_deleted() {
     }
     let rec = s.wait_ready("earth").await;
     assert_eq!(rec["seed"], 42);
-    assert_eq!((rec["map"]["width"].as_u64(), rec["map"]["kind"].as_str()), (Some(1024), Some("continents")));
+    assert_eq!((rec["map"]["width"].as_u64(), rec["map"]["kind"].as_str()), (Some(1024), Some("elevation")));
+    // Built from the Earth DEM, it keeps the map's heights and says so.
+    let f = &rec["stats"]["map_fidelity"];
+    assert!(f["r"].as_f64().unwrap() >= 0.97 && f["bias_m"].as_f64().unwrap().abs() <= 30.0, "{f}");
     let err = expect_error(s.client.delete(s.url("/v1/planets/earth")).send().await.unwrap(), 403, "protected_planet");
     err.await;
     let res = s.get("/v1/planets/earth/landmask.png?width=64").await;

@@ -29,7 +29,7 @@ use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::{middleware, Router};
 use error::ApiError;
-use state::{AppState, Entry, EARTH_ID, EARTH_MAP, EARTH_SEED};
+use state::{AppState, Entry, EARTH_ID, EARTH_MAP, EARTH_RANGE_M, EARTH_SEED};
 use std::net::SocketAddr;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -216,15 +216,16 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     Ok(Server { addr, shutdown: Some(tx), task })
 }
 
-/// The built-in planet: the shipped Earth continent bitmap, seed 42, default parameters.
+/// The built-in planet: the shipped Earth DEM (ETOPO5 relief and bathymetry), seed 42, default
+/// parameters.
 fn earth_entry() -> Entry {
     let (width, height) = png_size(EARTH_MAP);
     let map = MapMeta {
-        kind: crate::maps::MapKind::Continents,
+        kind: crate::maps::MapKind::Elevation,
         bytes: EARTH_MAP.len(),
         width,
         height,
-        range_m: None,
+        range_m: Some(EARTH_RANGE_M),
         bounds: None,
     };
     let input = StoredInput { seed: EARTH_SEED, params: crate::params::Params::default(), map: Some(map) };

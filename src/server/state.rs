@@ -20,7 +20,9 @@ use tokio::sync::OnceCell;
 /// Id of the built-in planet.
 pub const EARTH_ID: &str = "earth";
 /// The built-in planet's map, shipped in the binary.
-pub const EARTH_MAP: &[u8] = include_bytes!("../../maps/earth_landmask_ne10m_1024x512.png");
+pub const EARTH_MAP: &[u8] = include_bytes!("../../maps/earth_etopo5_1024x512.png");
+/// The metres of the built-in map's 16-bit levels 0 and 65535 (maps/earth_etopo5_1024x512.json).
+pub const EARTH_RANGE_M: (f64, f64) = (-9010.0, 6125.0);
 /// The built-in planet's seed.
 pub const EARTH_SEED: u64 = 42;
 
