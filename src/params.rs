@@ -89,8 +89,9 @@ impl Params {
     }
 
     /// Earth-like values: the paper's shape with Earth's land hypsometry and river gradients.
-    /// Rivers spring at most 2.2 km above sea level and mountains reach 8.8 km, so that most
-    /// land lies a few hundred metres up; water surfaces fall at least 1 cm per km (the lower
+    /// Rivers spring at most 1.5 km above sea level and mountains reach 8.8 km, so that most
+    /// land lies a few hundred metres up (the shipped continent bitmap: median 529 m, 90th
+    /// percentile 850 m, 99th 1,505 m; Earth's median is ~440 m); water surfaces fall at least 1 cm per km (the lower
     /// Amazon falls 2-3 cm/km, the lower Mississippi ~4 cm/km); a great river's channel is some
     /// 20 m deep at its mouth; and riverbanks rise 5 m plus 0.1 m per km above the water, as a
     /// floodplain does. Land covers 29 % of a random planet, as on Earth.
@@ -99,7 +100,7 @@ impl Params {
         Params {
             preset: Preset::Earth,
             land_percent: 29.0,
-            max_river_altitude_m: sea + 2_200.0,
+            max_river_altitude_m: sea + 1_500.0,
             max_mountain_altitude_m: sea + 8_800.0,
             max_river_depth_m: 20.0,
             min_river_slope_m_per_km: 0.01,
