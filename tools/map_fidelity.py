@@ -20,6 +20,9 @@ def box_average(a, shape):
 def main(planet_path, map_path):
     planet = tifffile.imread(planet_path).astype(np.float64)
     real = tifffile.imread(map_path).astype(np.float64)
+    if real.shape[1] != 2 * real.shape[0] or real.shape[1] % planet.shape[1]:
+        sys.exit(f"{map_path}: a global map is needed, a multiple of the planet raster's width; for a "
+                 "regional map read map_fidelity in the planet's stats.json")
     ref = box_average(real, planet.shape)
     land = ref >= 0
     lat = 90 - (np.arange(planet.shape[0]) + 0.5) * 180 / planet.shape[0]

@@ -38,8 +38,7 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
             owner[v as usize] = c;
         }
         for &e in &face.e {
-            let edge = &mesh.edges[e as usize];
-            let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+            let g = mesh.edges[e as usize].other_face(f);
             if mesh.face_kind(g) == FaceKind::Sea {
                 frontier.push(g);
             }
@@ -137,8 +136,7 @@ fn inland_basins_to_land(mesh: &Mesh, samples: &[Option<f32>], kinds: &mut [Face
             area += mesh.face_area_vector(f).length();
             ocean |= samples[f as usize].is_none_or(|v| v <= OCEAN_DEPTH_M);
             for &e in &mesh.faces[f as usize].e {
-                let edge = &mesh.edges[e as usize];
-                let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+                let g = mesh.edges[e as usize].other_face(f);
                 if kinds[g as usize] == FaceKind::Sea && body[g as usize] == u32::MAX {
                     body[g as usize] = id;
                     stack.push(g);

@@ -47,17 +47,7 @@ pub fn map_fidelity(mesh: &Mesh, map: &Map, sea: f64) -> Option<MapFidelity> {
     for row in 0..gh {
         let weight = bounds.lat_of(row, gh).to_radians().cos();
         for col in 0..gw {
-            let (mut sum, mut count) = (0.0f64, 0u32);
-            for r in row * ky..(row + 1) * ky {
-                for c in col * kx..(col + 1) * kx {
-                    if let Some(v) = map.value_at(c, r).filter(|v| !v.is_nan()) {
-                        sum += f64::from(v);
-                        count += 1;
-                    }
-                }
-            }
-            let mean = sum / f64::from(count.max(1));
-            if count > 0 && mean >= 0.0 {
+            if let Some(mean) = map.block_mean(col, row, kx, ky).filter(|&m| m >= 0.0) {
                 cells.push((f64::from(planet[(row * gw + col) as usize]), mean, weight));
             }
         }

@@ -144,6 +144,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     let graph = RiverGraph::from_mesh(&mesh);
+    let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));
     let stats = Stats {
         faces: mesh.faces.len(),
         vertices: mesh.vertices.len(),
@@ -155,12 +156,11 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         drained_fraction: graph.drained_fraction(&mesh),
         monotone_violations: graph.monotone_violations,
         bytes_per_vertex: mesh.bytes_per_vertex(),
-        build_ms: 0.0,
+        build_ms: start.elapsed().as_secs_f64() * 1000.0,
         lakes: relief.as_ref().map(|_| report.lakes),
         breached_depressions: relief.as_ref().map(|_| report.breached),
-        map_fidelity: spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m)),
+        map_fidelity,
     };
-    let stats = Stats { build_ms: start.elapsed().as_secs_f64() * 1000.0, ..stats };
     progress("done", 1.0);
     Ok(Planet { mesh, rivers: graph, stats })
 }

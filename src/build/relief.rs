@@ -8,8 +8,9 @@
 //! tools do (Lindsay 2016, least-cost breaching), the levels follow the map instead:
 //!
 //! 1. The fill level `F` of every vertex is the highest altitude on its way to the sea (the
-//!    flood's spill level), both measured on the ground the flood was ordered by. Vertices with `F` above their own altitude lie in a depression;
-//!    depressions are the connected pieces of the flood tree at one spill level.
+//!    flood's spill level), both measured on the ground the flood was ordered by. Vertices with
+//!    `F` above their own altitude lie in a depression; depressions are the connected pieces of
+//!    the flood tree at one spill level.
 //! 2. A depression at most [`BREACH_DEPTH_M`] deep, or covering no more than about two map
 //!    pixels, is an artefact of the map's sampling: it is *breached*, the channel cut through its
 //!    dam down to the depression's floor. A deeper and wider one is real and *kept*: its water

@@ -361,30 +361,28 @@ impl Map {
             return self.clone();
         }
         let (w, h) = (self.width / k, self.height / k);
-        let src_w = self.width as usize;
-        let values: Vec<f32> = (0..h as usize)
+        let values: Vec<f32> = (0..h)
             .into_par_iter()
-            .flat_map_iter(|r| {
-                (0..w as usize).map(move |c| {
-                    let (mut sum, mut count) = (0.0f64, 0u32);
-                    for rr in r * k as usize..((r + 1) * k as usize).min(self.height as usize) {
-                        for cc in c * k as usize..((c + 1) * k as usize).min(src_w) {
-                            let v = self.values[rr * src_w + cc];
-                            if !v.is_nan() {
-                                sum += f64::from(v);
-                                count += 1;
-                            }
-                        }
-                    }
-                    if count == 0 {
-                        f32::NAN
-                    } else {
-                        (sum / f64::from(count)) as f32
-                    }
-                })
-            })
+            .flat_map_iter(|r| (0..w).map(move |c| self.block_mean(c, r, k, k).map_or(f32::NAN, |m| m as f32)))
             .collect();
         Map { kind: self.kind, width: w, height: h, bounds: self.bounds, values }
+    }
+
+    /// Mean of the valid pixels of block `(col, row)` of `kx` x `ky` pixels (pixels
+    /// `col * kx .. (col + 1) * kx` across, likewise down, clipped to the map), or None when
+    /// none is valid.
+    pub fn block_mean(&self, col: u32, row: u32, kx: u32, ky: u32) -> Option<f64> {
+        let (mut sum, mut count) = (0.0f64, 0u32);
+        for r in row * ky..((row + 1) * ky).min(self.height) {
+            for c in col * kx..((col + 1) * kx).min(self.width) {
+                let v = self.values[r as usize * self.width as usize + c as usize];
+                if !v.is_nan() {
+                    sum += f64::from(v);
+                    count += 1;
+                }
+            }
+        }
+        (count > 0).then(|| sum / f64::from(count))
     }
 
     /// Area-weighted share of valid pixels that are land (see [`Map::is_land_value`]);

@@ -145,6 +145,16 @@ impl Edge {
         }
     }
 
+    /// The edge's face other than `f`.
+    #[inline]
+    pub fn other_face(&self, f: u32) -> u32 {
+        if self.f[0] == f {
+            self.f[1]
+        } else {
+            self.f[0]
+        }
+    }
+
     /// Kinds of the faces `f[0]` and `f[1]`.
     #[inline]
     pub fn face_kinds(&self) -> [FaceKind; 2] {

@@ -143,28 +143,26 @@ impl SphereRaster {
             if r1 < r0 {
                 return;
             }
-            // Column ranges: a face's longitudes may be unwrapped past ±180°, so a regional grid
-            // tries the interval a turn either way too.
-            let mut ranges = [(0i64, -1i64); 3];
-            match lon {
-                Some((a, b)) => {
-                    for (slot, turn) in ranges.iter_mut().zip([0.0, -360.0, 360.0]) {
-                        let c0 = ((a + turn - EPS - bounds.west) * w as f64 / span_x - 0.5).ceil() as i64;
-                        let c1 = ((b + turn + EPS - bounds.west) * w as f64 / span_x - 0.5).floor() as i64;
-                        *slot = if global && c1 - c0 + 1 >= w as i64 {
-                            (0, w as i64 - 1)
-                        } else if global {
-                            (c0, c1)
-                        } else {
-                            (c0.max(0), c1.min(w as i64 - 1))
-                        };
-                        if global {
-                            break;
-                        }
-                    }
+            // Column ranges: on the globe columns wrap; a regional grid clips, and tries the
+            // face's interval a turn either way too, as its longitudes may be unwrapped past ±180°.
+            let all = (0, w as i64 - 1);
+            let columns = |turn: f64, (a, b): (f64, f64)| {
+                let c0 = ((a + turn - EPS - bounds.west) * w as f64 / span_x - 0.5).ceil() as i64;
+                let c1 = ((b + turn + EPS - bounds.west) * w as f64 / span_x - 0.5).floor() as i64;
+                (c0, c1)
+            };
+            let none = (0, -1);
+            let ranges = match lon {
+                None => [all, none, none],
+                Some(ab) if global => {
+                    let (c0, c1) = columns(0.0, ab);
+                    [if c1 - c0 + 1 >= w as i64 { all } else { (c0, c1) }, none, none]
                 }
-                None => ranges[0] = (0, w as i64 - 1),
-            }
+                Some(ab) => [0.0, -360.0, 360.0].map(|turn| {
+                    let (c0, c1) = columns(turn, ab);
+                    (c0.max(0), c1.min(w as i64 - 1))
+                }),
+            };
             for r in r0 as usize..=r1 as usize {
                 for &(c0, c1) in &ranges {
                     for c in c0..=c1 {

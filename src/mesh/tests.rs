@@ -198,7 +198,7 @@ fn a_face_kind_is_kept_by_its_three_edges() {
         let edge = &m.edges[e as usize];
         assert_eq!(edge.face_kind(f), FaceKind::Land);
         // The neighbour across the edge is still sea.
-        let g = if edge.f[0] == f { edge.f[1] } else { edge.f[0] };
+        let g = edge.other_face(f);
         assert_eq!(edge.face_kind(g), FaceKind::Sea);
         assert_eq!(m.face_kind(g), FaceKind::Sea);
         assert_eq!(edge.face_kinds().iter().filter(|&&k| k == FaceKind::Land).count(), 1);
