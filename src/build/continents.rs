@@ -84,75 +84,32 @@ pub fn grow_random(mesh: &mut Mesh, count: u32, land_percent: f64, seed: u64) ->
     land / total
 }
 
-/// An elevation map's water below sea level that reaches this deep is sea even where the map
-/// lost its strait to the ocean (the Black Sea's Bosporus at 20 km pixels). No land depression
-/// is as deep: the lowest continental floor, Lake Baikal's, lies 1,186 m below sea level, the
-/// Caspian's 1,025 m.
-pub const OCEAN_DEPTH_M: f32 = -1500.0;
-
 /// Labels faces from a map: land where the map says so at the face centre; sea outside the
 /// map's bounds and where it has no data. On an elevation map, ground below sea level is sea
-/// only where it joins the ocean: the largest body of sea faces, the sea outside the map's
-/// bounds, or a body reaching [`OCEAN_DEPTH_M`]; elsewhere (the Caspian, the Qattara
-/// Depression) it is land, and the rivers make it a lake or drain it.
+/// only where it joins the ocean ([`Map::ocean_pixels`]: an ocean pixel within one pixel of the
+/// face centre); elsewhere (the Caspian, the Qattara Depression) it is land, and the rivers
+/// make it a lake or drain it.
 pub fn from_map(mesh: &mut Mesh, map: &Map) {
-    let samples: Vec<Option<f32>> = (0..mesh.faces.len() as u32)
+    let ocean = (map.kind == MapKind::Elevation).then(|| map.ocean_pixels());
+    let kinds: Vec<FaceKind> = (0..mesh.faces.len() as u32)
         .map(|f| {
             let (lat, lon) = lat_lon(face_centre(mesh, f));
-            map.sample(lat, lon)
+            let land = match map.sample(lat, lon) {
+                Some(v) if is_land(map.kind, v) => true,
+                Some(_) => ocean.as_ref().is_some_and(|o| !map.window(lat, lon, 1).any(|i| o[i])),
+                None => false,
+            };
+            if land {
+                FaceKind::Land
+            } else {
+                FaceKind::Sea
+            }
         })
         .collect();
-    let mut kinds: Vec<FaceKind> = samples
-        .iter()
-        .map(|s| match s {
-            Some(v) if is_land(map.kind, *v) => FaceKind::Land,
-            _ => FaceKind::Sea,
-        })
-        .collect();
-    if map.kind == MapKind::Elevation {
-        inland_basins_to_land(mesh, &samples, &mut kinds);
-    }
     for (f, k) in kinds.into_iter().enumerate() {
         mesh.set_face_kind(f as u32, k);
     }
     classify(mesh);
-}
-
-/// Turns bodies of sea faces (joined through edges) that do not join the ocean into land.
-fn inland_basins_to_land(mesh: &Mesh, samples: &[Option<f32>], kinds: &mut [FaceKind]) {
-    let nf = kinds.len();
-    let mut body = vec![u32::MAX; nf];
-    let mut bodies: Vec<(f64, bool)> = Vec::new(); // (area, joins the ocean)
-    let mut stack = Vec::new();
-    for start in 0..nf {
-        if kinds[start] != FaceKind::Sea || body[start] != u32::MAX {
-            continue;
-        }
-        let id = bodies.len() as u32;
-        let (mut area, mut ocean) = (0.0, false);
-        body[start] = id;
-        stack.push(start as u32);
-        while let Some(f) = stack.pop() {
-            area += mesh.face_area_vector(f).length();
-            ocean |= samples[f as usize].is_none_or(|v| v <= OCEAN_DEPTH_M);
-            for &e in &mesh.faces[f as usize].e {
-                let g = mesh.edges[e as usize].other_face(f);
-                if kinds[g as usize] == FaceKind::Sea && body[g as usize] == u32::MAX {
-                    body[g as usize] = id;
-                    stack.push(g);
-                }
-            }
-        }
-        bodies.push((area, ocean));
-    }
-    if let Some(largest) = (0..bodies.len()).max_by(|&a, &b| bodies[a].0.total_cmp(&bodies[b].0)) {
-        bodies[largest].1 = true;
-    }
-    for f in 0..nf {
-        if kinds[f] == FaceKind::Sea && !bodies[body[f] as usize].1 {
-            kinds[f] = FaceKind::Land;
-        }
-    }
 }
 
 /// Whether a map value means land: half white in a bitmap, at or above sea level in metres.

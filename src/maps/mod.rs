@@ -31,6 +31,11 @@ use serde::{Deserialize, Serialize};
 pub use bounds::GeoBounds;
 pub use error::MapError;
 
+/// Water below sea level that reaches this deep is sea even where the map lost its strait to
+/// the ocean (the Black Sea's Bosporus at 20 km pixels). No land depression is as deep: the
+/// lowest continental floor, Lake Baikal's, lies 1,186 m below sea level, the Caspian's 1,025 m.
+pub const OCEAN_DEPTH_M: f32 = -1500.0;
+
 /// What a map describes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -320,31 +325,82 @@ impl Map {
         }
     }
 
-    /// The lowest valid value within `radius` pixels (a square window) of the pixel holding a
-    /// point, or None where [`Map::sample`] has none. A vertex standing for ground several
-    /// pixels wide drains through the lowest ground around it: a gorge narrower than the
-    /// vertices' spacing still carries its river.
-    pub fn sample_min(&self, lat_deg: f64, lon_deg: f64, radius: u32) -> Option<f32> {
-        self.sample(lat_deg, lon_deg)?;
+    /// Indices into [`Map::values`] of the pixels within `radius` pixels (a square window,
+    /// wrapping in longitude on a global map) of the pixel holding a point; none where
+    /// [`Map::sample`] has no value.
+    pub fn window(&self, lat_deg: f64, lon_deg: f64, radius: u32) -> impl Iterator<Item = usize> + '_ {
         let b = &self.bounds;
         let (dx, dy) = self.pixel_size_deg();
-        let (w, h) = (self.width as i64, self.height as i64);
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let valid = self.sample(lat_deg, lon_deg).is_some();
         let col = ((b.unwrap_lon(lon_deg) - b.west) / dx).floor() as i64;
         let row = ((b.north - lat_deg) / dy).floor() as i64;
-        let r = i64::from(radius);
-        let mut low = f32::INFINITY;
-        for rr in (row - r).max(0)..=(row + r).min(h - 1) {
-            for cc in col - r..=col + r {
-                let cc = if b.spans_all_longitudes() { cc.rem_euclid(w) } else { cc };
-                if (0..w).contains(&cc) {
-                    let v = self.values[(rr * w + cc) as usize];
-                    if v < low {
-                        low = v;
+        let r = if valid { i64::from(radius) } else { -1 };
+        let wraps = b.spans_all_longitudes();
+        ((row - r).max(0)..=(row + r).min(h - 1)).flat_map(move |rr| {
+            (col - r..=col + r).filter_map(move |cc| {
+                let cc = if wraps { cc.rem_euclid(w) } else { cc };
+                (0..w).contains(&cc).then_some((rr * w + cc) as usize)
+            })
+        })
+    }
+
+    /// The lowest valid value within `radius` pixels of the pixel holding a point (see
+    /// [`Map::window`]), or None where [`Map::sample`] has none. A vertex standing for ground
+    /// several pixels wide drains through the lowest ground around it: a gorge narrower than
+    /// the vertices' spacing still carries its river.
+    pub fn sample_min(&self, lat_deg: f64, lon_deg: f64, radius: u32) -> Option<f32> {
+        let low = self.window(lat_deg, lon_deg, radius).map(|i| self.values[i]).fold(f32::INFINITY, f32::min);
+        low.is_finite().then_some(low)
+    }
+
+    /// Per pixel of an elevation map: below sea level and joined to the ocean through pixels
+    /// below sea level (8-connected, across the antimeridian on a global map). The ocean is the
+    /// largest such body of a global map, any body touching a regional map's edge (the planet
+    /// is sea outside it), and any body reaching [`OCEAN_DEPTH_M`], however its strait was lost
+    /// to the map's resolution. The Caspian or the Qattara Depression are no ocean; the Persian Gulf and the
+    /// Baltic, whose straits the mesh may not resolve, are.
+    pub fn ocean_pixels(&self) -> Vec<bool> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        let wet = |i: usize| self.values[i] < 0.0;
+        let mut body = vec![u32::MAX; w * h];
+        let mut bodies: Vec<(usize, bool)> = Vec::new(); // (pixels, ocean)
+        let wraps = self.bounds.spans_all_longitudes();
+        let mut stack = Vec::new();
+        for start in 0..w * h {
+            if !wet(start) || body[start] != u32::MAX {
+                continue;
+            }
+            let id = bodies.len() as u32;
+            let (mut count, mut ocean) = (0usize, false);
+            body[start] = id;
+            stack.push(start);
+            while let Some(i) = stack.pop() {
+                count += 1;
+                let (r, c) = ((i / w) as i64, (i % w) as i64);
+                ocean |= self.values[i] <= OCEAN_DEPTH_M
+                    || (!self.bounds.is_global() && (r == 0 || r == h as i64 - 1 || c == 0 || c == w as i64 - 1));
+                for (dr, dc) in [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)] {
+                    let (rr, mut cc) = (r + dr, c + dc);
+                    if wraps {
+                        cc = cc.rem_euclid(w as i64);
+                    }
+                    if rr < 0 || rr >= h as i64 || cc < 0 || cc >= w as i64 {
+                        continue;
+                    }
+                    let j = rr as usize * w + cc as usize;
+                    if wet(j) && body[j] == u32::MAX {
+                        body[j] = id;
+                        stack.push(j);
                     }
                 }
             }
+            bodies.push((count, ocean));
         }
-        low.is_finite().then_some(low)
+        if let Some(largest) = (0..bodies.len()).max_by_key(|&b| bodies[b].0).filter(|_| self.bounds.is_global()) {
+            bodies[largest].1 = true;
+        }
+        body.iter().map(|&b| b != u32::MAX && bodies[b as usize].1).collect()
     }
 
     /// The map box-averaged over blocks of `k` x `k` pixels (nodata left out of each block; a

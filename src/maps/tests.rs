@@ -260,3 +260,32 @@ fn map_kind_names() {
     assert_eq!(MapLimits::default().max_pixels, 16384 * 4096);
     assert_eq!(MapLimits::default().max_bytes, 64 * 1024 * 1024);
 }
+
+#[test]
+fn ocean_pixels_join_through_straits_and_across_the_antimeridian() {
+    // 8x4 globe, rows north to south. The ocean (-100 m) spans columns 7 and 0 across the
+    // antimeridian and reaches column 2 by a diagonal strait; a shallow basin (-30 m) at column 4,
+    // rows 0-1, is land-locked; a deep one (-2000 m) at column 5, row 3, is sea whatever joins it.
+    let l = 100.0f32;
+    #[rustfmt::skip]
+    let values = vec![
+        -100.0, l, l, l, -30.0, l, l, -100.0,
+        -100.0, -100.0, l, l, -30.0, l, l, -100.0,
+        -100.0, l, -100.0, l, l, l, l, -100.0,
+        -100.0, l, l, l, l, -2000.0, l, -100.0,
+    ];
+    let map = Map::from_values(MapKind::Elevation, 8, 4, GeoBounds::GLOBE, values.clone()).unwrap();
+    let ocean = map.ocean_pixels();
+    let at = |c: usize, r: usize| ocean[r * 8 + c];
+    assert!(at(0, 0) && at(7, 3) && at(2, 2), "the ocean and its strait");
+    assert!(!at(4, 0) && !at(4, 1), "a land-locked basin above the ocean depth is no ocean");
+    assert!(at(5, 3), "a basin deeper than OCEAN_DEPTH_M is ocean");
+    assert!(!at(1, 0), "land is no ocean");
+    // A regional map: a basin touching its edge joins the sea outside it.
+    let b = GeoBounds { west: 0.0, south: 0.0, east: 8.0, north: 4.0 };
+    let mut v = vec![l; 32];
+    v[8] = -5.0; // row 1, column 0: on the west edge
+    v[8 + 3] = -5.0; // row 1, column 3: inside
+    let ocean = Map::from_values(MapKind::Elevation, 8, 4, b, v).unwrap().ocean_pixels();
+    assert!(ocean[8] && !ocean[11]);
+}
