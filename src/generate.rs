@@ -79,7 +79,7 @@ pub fn outputs(
     stats.push(b'\n');
     Ok(vec![
         ("planet.glb", export::glb::planet_glb(&planet.mesh, p)?),
-        ("rivers.geojson", export::geojson::rivers_geojson(&planet.mesh, &planet.rivers, p).into_bytes()),
+        ("rivers.geojson", export::geojson::rivers_geojson(planet, p).into_bytes()),
         ("landmask.png", export::raster::landmask_png(&planet.mesh, w, h)),
         ("elevation.tif", export::raster::elevation_tiff(&planet.mesh, p, w, h)),
         ("preview.png", export::raster::preview_png(&planet.mesh, &planet.rivers, p, w, h)),

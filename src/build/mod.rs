@@ -1,7 +1,10 @@
 //! Planet generation (paper §4): base shape, continents and initial river networks.
 
+pub mod basins;
+pub mod climate;
 pub mod continents;
 pub mod fidelity;
+pub mod lakes;
 pub mod network;
 pub mod relief;
 pub mod rivers;
@@ -30,6 +33,10 @@ pub struct Planet {
     pub mesh: Mesh,
     pub rivers: RiverGraph,
     pub stats: Stats,
+    /// Elevation maps: the lakes, and the lake each base-mesh vertex lies under (`NONE` off
+    /// lakes; empty without a map).
+    pub lakes: Vec<lakes::Lake>,
+    pub lake_of: Vec<u32>,
 }
 
 /// `stats.json`: the numbers that describe a built planet.
@@ -48,9 +55,12 @@ pub struct Stats {
     pub monotone_violations: usize,
     pub bytes_per_vertex: f64,
     pub build_ms: f64,
-    /// Elevation maps: depressions of the map kept as lakes and breached as artefacts.
+    /// Elevation maps: lakes (the depressions of the map kept as lakes and the terminal lakes
+    /// of closed basins), depressions breached as artefacts, and closed (endorheic) basins.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lakes: Option<usize>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub endorheic_basins: Option<usize>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub breached_depressions: Option<usize>,
     /// Elevation maps: the planet's ground against the map (see [`fidelity`]).
@@ -140,7 +150,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         let edge_px = map_edge_length(m, p.radius_m) / (dlat.to_radians() * p.radius_m);
         m.box_filtered((edge_px / 3.0) as u32)
     });
-    let report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
+    let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     let graph = RiverGraph::from_mesh(&mesh);
@@ -158,11 +168,14 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         bytes_per_vertex: mesh.bytes_per_vertex(),
         build_ms: start.elapsed().as_secs_f64() * 1000.0,
         lakes: relief.as_ref().map(|_| report.lakes),
+        endorheic_basins: relief.as_ref().map(|_| report.endorheic),
         breached_depressions: relief.as_ref().map(|_| report.breached),
         map_fidelity,
     };
+    let lake_of = std::mem::take(&mut report.lake_of);
+    let lakes = lakes::lakes(&mesh, &lake_of, &report.lake_levels);
     progress("done", 1.0);
-    Ok(Planet { mesh, rivers: graph, stats })
+    Ok(Planet { mesh, rivers: graph, stats, lakes, lake_of })
 }
 
 /// Whether face `f` may overlap the map bounds (its vertices' bounding box, widened by the

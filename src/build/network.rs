@@ -17,6 +17,8 @@ pub struct RiverGraph {
     pub order: Vec<u32>,
     /// Coast vertices where a river meets the sea.
     pub mouths: Vec<u32>,
+    /// Pits of closed basins, where rivers end inland ([`VertexFlags::SINK`]).
+    pub sinks: Vec<u32>,
     /// River vertices with no lower river neighbour, plus river edges that are not a downstream
     /// link (water level equal at both ends, or a second outflow).
     pub monotone_violations: usize,
@@ -41,6 +43,7 @@ impl RiverGraph {
         let mut river_edges = 0usize;
         let mut violations = 0;
         let mut mouths = Vec::new();
+        let mut sinks = Vec::new();
         let adj = mesh.adjacency();
         for v in 0..n as u32 {
             let vert = &mesh.vertices[v as usize];
@@ -49,6 +52,10 @@ impl RiverGraph {
             }
             if vert.flags.contains(VertexFlags::MOUTH) {
                 mouths.push(v);
+                continue;
+            }
+            if vert.flags.contains(VertexFlags::SINK) {
+                sinks.push(v);
                 continue;
             }
             let mut best: Option<(f64, u32)> = None;
@@ -98,7 +105,7 @@ impl RiverGraph {
             let (wa, wb) = (mesh.vertices[a as usize].water, mesh.vertices[b as usize].water);
             wb.total_cmp(&wa).then(a.cmp(&b))
         });
-        RiverGraph { downstream, up_offsets, up, order, mouths, monotone_violations: violations }
+        RiverGraph { downstream, up_offsets, up, order, mouths, sinks, monotone_violations: violations }
     }
 
     /// Vertices whose water flows directly into `v`.
@@ -161,11 +168,12 @@ impl RiverGraph {
             .map(|(w, _)| w)
     }
 
-    /// Share of the land area (by vertex) whose water reaches the sea through the network.
+    /// Share of the land area (by vertex) whose water reaches the sea, or a closed basin's
+    /// pit, through the network.
     pub fn drained_fraction(&self, mesh: &Mesh) -> f64 {
         let n = mesh.vertices.len();
         let mut reaches_sea = vec![false; n];
-        for &m in &self.mouths {
+        for &m in self.mouths.iter().chain(&self.sinks) {
             reaches_sea[m as usize] = true;
         }
         for &v in self.order.iter().rev() {
@@ -229,9 +237,10 @@ impl RiverGraph {
                 best
             };
         }
+        let ends = VertexFlags(VertexFlags::MOUTH.0 | VertexFlags::SINK.0);
         let is_start = |v: u32| {
             let f = mesh.vertices[v as usize].flags;
-            f.contains(VertexFlags::RIVER) && !f.contains(VertexFlags::MOUTH) && self.tributaries(v) != 1
+            f.contains(VertexFlags::RIVER) && !f.intersects(ends) && self.tributaries(v) != 1
         };
         let mut start_id = vec![usize::MAX; n];
         let starts: Vec<u32> = self.order.iter().copied().filter(|&v| is_start(v)).collect();
@@ -252,7 +261,7 @@ impl RiverGraph {
                     }
                     length += mesh.pos(v).distance(mesh.pos(d));
                     path.push(d);
-                    if self.tributaries(d) >= 2 || mesh.vertices[d as usize].flags.contains(VertexFlags::MOUTH) {
+                    if self.tributaries(d) >= 2 || mesh.vertices[d as usize].flags.intersects(ends) {
                         break;
                     }
                     v = d;

@@ -34,9 +34,21 @@ pub struct Levels {
     pub water: Vec<f64>,
     /// Lake id per vertex (`NONE` off lakes).
     pub lake: Vec<u32>,
-    /// Depressions breached and kept.
+    /// Per lake: its depression, and whether it has no outlet (a terminal lake).
+    pub lakes: Vec<LakeLevel>,
+    /// Depressions breached.
     pub breached: usize,
-    pub lakes: usize,
+    /// Depressions with no outlet to the sea (with or without a standing lake).
+    pub endorheic: usize,
+}
+
+/// A lake of [`Levels`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LakeLevel {
+    pub depression: u32,
+    /// Surface level, m relative to sea level.
+    pub level: f64,
+    pub endorheic: bool,
 }
 
 /// The flood tree and the map over it: `order` lists the inland river vertices downstream
@@ -44,6 +56,7 @@ pub struct Levels {
 /// `route[v]` the altitude the flood ordered it by (the lowest ground around it) and
 /// `height[v]` the altitude of its water before carving (m relative to sea level; coast
 /// vertices drain nowhere and stand at 0), `area[v]` the area a vertex stands for.
+#[derive(Clone, Copy)]
 pub struct Flood<'a> {
     pub order: &'a [u32],
     pub downstream: &'a [u32],
@@ -57,63 +70,125 @@ pub struct Flood<'a> {
     pub river_slope: f64,
 }
 
-/// Water levels and lakes of a relief map's network (see the module doc).
-pub fn levels(flood: &Flood) -> Levels {
+/// The depressions of a flood tree (step 1 of the module doc) and which are kept (step 2).
+#[derive(Clone, Debug, Default)]
+pub struct Depressions {
+    /// Depression per vertex (`NONE` outside any).
+    pub comp: Vec<u32>,
+    /// Per depression: spill level, floor (m relative to sea level), area (m²).
+    pub spill: Vec<f64>,
+    pub floor: Vec<f64>,
+    pub size: Vec<f64>,
+    /// Per depression: the vertex it drains out through, and its lowest vertex.
+    pub root: Vec<u32>,
+    pub pit: Vec<u32>,
+    /// Per depression: real (kept), not an artefact of the map's sampling (breached).
+    pub kept: Vec<bool>,
+}
+
+/// Fill levels and depressions: pieces of the tree at one spill level above the map.
+pub fn depressions(flood: &Flood) -> Depressions {
     let n = flood.height.len();
-    let Flood { order, downstream, edge_len, route, height, area, .. } = *flood;
-    // 1. Fill levels and depressions: pieces of the tree at one spill level above the map.
+    let Flood { order, downstream, route, area, .. } = *flood;
     let mut fill = vec![0.0f64; n];
-    let mut comp = vec![NONE; n];
-    let mut spill: Vec<f64> = Vec::new();
-    let mut floor: Vec<f64> = Vec::new();
-    let mut size: Vec<f64> = Vec::new();
+    let mut d = Depressions { comp: vec![NONE; n], ..Depressions::default() };
     for &v in order {
         let (v, u) = (v as usize, downstream[v as usize] as usize);
         fill[v] = route[v].max(fill[u]);
         if fill[v] > route[v] {
-            let c = if comp[u] != NONE && fill[u] == fill[v] {
-                comp[u]
+            let c = if d.comp[u] != NONE && fill[u] == fill[v] {
+                d.comp[u]
             } else {
-                spill.push(fill[v]);
-                floor.push(route[v]);
-                size.push(0.0);
-                spill.len() as u32 - 1
+                d.spill.push(fill[v]);
+                d.floor.push(route[v]);
+                d.size.push(0.0);
+                d.root.push(v as u32);
+                d.pit.push(v as u32);
+                d.spill.len() as u32 - 1
             };
-            comp[v] = c;
-            floor[c as usize] = floor[c as usize].min(route[v]);
-            size[c as usize] += area[v];
+            d.comp[v] = c;
+            let c = c as usize;
+            if route[v] < d.floor[c] {
+                (d.floor[c], d.pit[c]) = (route[v], v as u32);
+            }
+            d.size[c] += area[v];
         }
     }
-    // 2. Breach or keep.
-    let kept: Vec<bool> =
-        (0..spill.len()).map(|c| spill[c] - floor[c] > BREACH_DEPTH_M && size[c] >= flood.min_lake_area_m2).collect();
-    let mut lake_id = vec![NONE; spill.len()];
-    let mut lakes = 0u32;
-    for (c, &k) in kept.iter().enumerate() {
-        if k {
-            lake_id[c] = lakes;
-            lakes += 1;
+    d.kept = (0..d.spill.len())
+        .map(|c| d.spill[c] - d.floor[c] > BREACH_DEPTH_M && d.size[c] >= flood.min_lake_area_m2)
+        .collect();
+    d
+}
+
+/// Water levels and lakes of a relief map's network (see the module doc). `terminal[c]` is the
+/// level of depression `c`'s terminal lake when it has no outlet: the flood tree must then
+/// already drain it to its pit ([`super::basins::drain_to_pits`]), and `order` leave the pits out.
+pub fn levels(flood: &Flood, dep: &Depressions, terminal: &[Option<f64>]) -> Levels {
+    let n = flood.height.len();
+    let Flood { order, downstream, edge_len, route, height, area, .. } = *flood;
+    // Lakes: a kept depression's water at its spill level; a terminal one's up to its level,
+    // when that covers about two map pixels.
+    let mut lakes = Vec::new();
+    let mut lake_of_comp = vec![NONE; dep.spill.len()];
+    let mut wet_area = vec![0.0f64; dep.spill.len()];
+    for v in 0..n {
+        let c = dep.comp[v];
+        if c != NONE && terminal[c as usize].is_some_and(|l| route[v] < l) {
+            wet_area[c as usize] += area[v];
         }
     }
-    let lake: Vec<u32> = comp.iter().map(|&c| if c == NONE { NONE } else { lake_id[c as usize] }).collect();
-    // 3a. Start from the map, lakes at their spill level; carve upstream first.
+    for c in 0..dep.spill.len() {
+        let (level, endorheic) = match terminal[c] {
+            Some(l) => (l, true),
+            None => (dep.spill[c], false),
+        };
+        let lake = if endorheic { wet_area[c] >= flood.min_lake_area_m2 } else { dep.kept[c] };
+        if lake {
+            lake_of_comp[c] = lakes.len() as u32;
+            lakes.push(LakeLevel { depression: c as u32, level, endorheic });
+        }
+    }
+    let lake: Vec<u32> = (0..n)
+        .map(|v| {
+            let c = dep.comp[v];
+            match c {
+                NONE => NONE,
+                c if terminal[c as usize].is_some_and(|l| route[v] >= l) => NONE,
+                c => lake_of_comp[c as usize],
+            }
+        })
+        .collect();
+    // Start from the map, lakes at their level; carve upstream first.
     let mut water: Vec<f64> =
-        (0..n).map(|v| if lake[v] != NONE { spill[comp[v] as usize] } else { height[v] }).collect();
+        (0..n).map(|v| if lake[v] != NONE { lakes[lake[v] as usize].level } else { height[v] }).collect();
+    for (c, t) in terminal.iter().enumerate() {
+        if let Some(l) = t {
+            let pit = dep.pit[c] as usize;
+            water[pit] = water[pit].min(*l);
+        }
+    }
     for &v in order.iter().rev() {
         let (v, u) = (v as usize, downstream[v as usize] as usize);
         if lake[u] == NONE {
             water[u] = water[u].min(water[v] - flood.river_slope * edge_len[v]);
         }
     }
-    // 3b. Strictly falling: at least the least slope (a millimetre an edge inside a lake) above
-    // the vertex downstream, downstream first; the coast stays at sea level.
+    // Strictly falling: at least the least slope (a millimetre an edge inside a lake) above
+    // the vertex downstream, downstream first; the coast stays at sea level, a terminal pit at
+    // its lake's level.
     let mut out = vec![0.0f64; n];
+    for (c, t) in terminal.iter().enumerate() {
+        if t.is_some() {
+            out[dep.pit[c] as usize] = water[dep.pit[c] as usize];
+        }
+    }
     for &v in order {
         let (v, u) = (v as usize, downstream[v as usize] as usize);
         let step = if lake[v] != NONE && lake[v] == lake[u] { LAKE_STEP_M } else { flood.river_slope * edge_len[v] };
         out[v] = water[v].max(out[u] + step.max(LAKE_STEP_M));
     }
-    Levels { water: out, lake, breached: kept.iter().filter(|&&k| !k).count(), lakes: lakes as usize }
+    let breached = (0..dep.spill.len()).filter(|&c| !dep.kept[c] && terminal[c].is_none()).count();
+    Levels { water: out, lake, lakes, breached, endorheic: terminal.iter().filter(|t| t.is_some()).count() }
 }
 
 #[cfg(test)]
@@ -128,7 +203,7 @@ mod tests {
         let downstream: Vec<u32> = (0..n as u32).map(|v| v.saturating_sub(1)).collect();
         let edge_len = vec![10_000.0; n];
         let area = vec![1.0e8; n];
-        levels(&Flood {
+        let flood = Flood {
             order: &order,
             downstream: &downstream,
             edge_len: &edge_len,
@@ -137,7 +212,9 @@ mod tests {
             area: &area,
             min_lake_area_m2: 1.5e8,
             river_slope: 1.0e-5,
-        })
+        };
+        let dep = depressions(&flood);
+        levels(&flood, &dep, &vec![None; dep.spill.len()])
     }
 
     #[test]
@@ -148,7 +225,7 @@ mod tests {
             assert!(l.water[v] <= h[v] + 1e-9, "{v}: {} over {}", l.water[v], h[v]);
             assert!(l.water[v] > l.water[v - 1]);
         }
-        assert_eq!((l.lakes, l.breached), (0, 0));
+        assert_eq!((l.lakes.len(), l.breached), (0, 0));
     }
 
     #[test]
@@ -156,7 +233,7 @@ mod tests {
         // A 30 m dam at vertex 2 in front of a pit at vertex 3.
         let h = [0.0, 10.0, 60.0, 30.0, 100.0];
         let l = line(&h);
-        assert_eq!((l.lakes, l.breached), (0, 1));
+        assert_eq!((l.lakes.len(), l.breached), (0, 1));
         assert!(l.water[2] < 30.0, "the dam is cut to the pit: {}", l.water[2]);
         assert!(l.water[3] <= 30.0 && l.water[4] <= 100.0);
         for v in 1..h.len() {
@@ -169,7 +246,7 @@ mod tests {
         // Pass at 300 m; floor at 100 m over two vertices.
         let h = [0.0, 50.0, 300.0, 100.0, 120.0, 400.0];
         let l = line(&h);
-        assert_eq!((l.lakes, l.breached), (1, 0));
+        assert_eq!((l.lakes.len(), l.breached), (1, 0));
         assert_eq!(l.lake[3], l.lake[4]);
         assert_ne!(l.lake[3], NONE);
         assert_eq!(l.lake[5], NONE);
@@ -179,7 +256,7 @@ mod tests {
         assert!(l.water[2] < l.water[3] && l.water[2] > 299.0);
         // One vertex alone is too small to keep, however deep.
         let l = line(&[0.0, 50.0, 300.0, 100.0, 400.0]);
-        assert_eq!((l.lakes, l.breached), (0, 1));
+        assert_eq!((l.lakes.len(), l.breached), (0, 1));
     }
 
     #[test]

@@ -15,6 +15,7 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use super::continents::lat_lon;
+use crate::mesh::raster::SphereRaster;
 
 /// Radius of the window (in pixels of the sampled map) whose lowest ground routes a vertex.
 const ROUTE_RADIUS_PX: u32 = 1;
@@ -32,6 +33,11 @@ pub struct RiverReport {
     /// Relief maps: depressions kept as lakes and depressions breached (see [`super::relief`]).
     pub lakes: usize,
     pub breached: usize,
+    /// Relief maps: depressions with no outlet to the sea (see [`super::basins`]).
+    pub endorheic: usize,
+    /// Relief maps: lake per vertex (`NONE` off lakes) and each lake's level and outlet.
+    pub lake_of: Vec<u32>,
+    pub lake_levels: Vec<super::relief::LakeLevel>,
 }
 
 /// How far a river vertex's water lies from the map at the vertex towards its lowest bank.
@@ -63,6 +69,31 @@ fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at
         }
     }
     own + (h - own) * VALLEY_DEPTH
+}
+
+/// Water each vertex yields as runoff from land (m³/yr) and loses as open water, evaporation
+/// less precipitation (m³/yr), in the planet's climate ([`super::climate`]); `height` is its
+/// altitude (m relative to sea level).
+fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], area: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    use super::climate::{potential_evaporation_mm, runoff_mm, Climate, HEIGHT, WIDTH};
+    let raster = SphereRaster::new(mesh, WIDTH as u32, HEIGHT as u32);
+    let is_land = |v: usize| inland[v] || coast[v];
+    let land = raster.interpolate(mesh, |v| if is_land(v) { 1.0 } else { 0.0 });
+    let alt = raster.interpolate(mesh, |v| if is_land(v) { height[v].max(0.0) } else { 0.0 });
+    let cells: Vec<(bool, f64)> = land.iter().zip(&alt).map(|(&l, &a)| (l > 0.5, f64::from(a))).collect();
+    let climate = Climate::new(&cells);
+    let mut runoff = vec![0.0f64; area.len()];
+    let mut loss = vec![0.0f64; area.len()];
+    for v in 0..area.len() {
+        let (lat, lon) = lat_lon(mesh.pos(v as u32));
+        let p = climate.precip_at(lat, lon);
+        let e0 = potential_evaporation_mm(lat, height[v]);
+        if is_land(v) {
+            runoff[v] = runoff_mm(p, e0) * 1e-3 * area[v];
+        }
+        loss[v] = (e0 - p) * 1e-3 * area[v];
+    }
+    (runoff, loss)
 }
 
 /// The area each vertex stands for: a third of each face around it.
@@ -204,6 +235,55 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         }
     }
 
+    // --- Levels on a relief map: depressions breached, kept as lakes or closed ---
+    let p = params;
+    let mut sinks: Vec<u32> = Vec::new();
+    let relief_levels = relief.map(|map| {
+        let route: Vec<f64> = (0..n).map(|v| if coast[v] { 0.0 } else { route[v].unwrap_or(0.0) }).collect();
+        let height: Vec<f64> = (0..n)
+            .map(|v| if coast[v] { 0.0 } else { valley_floor(mesh, &adj, map, v as u32, elevation[v], p) })
+            .collect();
+        let area = vertex_areas(mesh);
+        let (_, dlat) = map.pixel_size_deg();
+        let pixel = dlat.to_radians() * mesh.radius;
+        let edge_of = |down_edge: &[u32]| -> Vec<f64> {
+            (0..n).map(|v| if down_edge[v] == NONE { 0.0 } else { mesh.edge_length(down_edge[v]) }).collect()
+        };
+        let lens = edge_of(&down_edge);
+        // The terrain; the tree (order, links, lengths) changes when closed basins drain to their pits.
+        let terrain = super::relief::Flood {
+            order: &[],
+            downstream: &[],
+            edge_len: &[],
+            route: &route,
+            height: &height,
+            area: &area,
+            min_lake_area_m2: 2.0 * pixel * pixel,
+            river_slope: p.river_slope(),
+        };
+        let flood = super::relief::Flood { order: &order, downstream: &downstream, edge_len: &lens, ..terrain };
+        let dep = super::relief::depressions(&flood);
+        let (runoff, net_loss) = water_balance(mesh, &inland, &coast, &height, &area);
+        let terminal = super::basins::terminal_levels(&flood, &dep, &runoff, &net_loss);
+        let (outlets, new_order) =
+            super::basins::drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);
+        for o in outlets {
+            tributaries[o as usize] = tributaries[o as usize].saturating_sub(1);
+        }
+        order = new_order;
+        sinks = (0..dep.spill.len()).filter(|&c| terminal[c].is_some()).map(|c| dep.pit[c]).collect();
+        let lens = edge_of(&down_edge);
+        let flood = super::relief::Flood { order: &order, downstream: &downstream, edge_len: &lens, ..terrain };
+        super::relief::levels(&flood, &dep, &terminal)
+    });
+    if let Some(l) = &relief_levels {
+        report.lakes = l.lakes.len();
+        report.breached = l.breached;
+        report.endorheic = l.endorheic;
+        report.lake_of = l.lake.clone();
+        report.lake_levels = l.lakes.clone();
+    }
+
     // --- Lengths along the network ---
     let edge_len: Vec<f64> = (0..mesh.edges.len() as u32).map(|e| mesh.edge_length(e)).collect();
     let len = |e: u32| edge_len[e as usize];
@@ -215,36 +295,6 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     for &v in order.iter().rev() {
         let u = downstream[v as usize] as usize;
         l_up[u] = l_up[u].max(l_up[v as usize] + len(down_edge[v as usize]));
-    }
-
-    // --- Levels on a relief map: breached or kept depressions, water below the map ---
-    let p = params;
-    let relief_levels = relief.map(|map| {
-        let route: Vec<f64> = (0..n).map(|v| if coast[v] { 0.0 } else { route[v].unwrap_or(0.0) }).collect();
-        let height: Vec<f64> = (0..n)
-            .map(|v| if coast[v] { 0.0 } else { valley_floor(mesh, &adj, map, v as u32, elevation[v], p) })
-            .collect();
-        let area = vertex_areas(mesh);
-        let (_, dlat) = map.pixel_size_deg();
-        let pixel = dlat.to_radians() * mesh.radius;
-        let mut edge_of = vec![0.0f64; n];
-        for &v in &order {
-            edge_of[v as usize] = len(down_edge[v as usize]);
-        }
-        super::relief::levels(&super::relief::Flood {
-            order: &order,
-            downstream: &downstream,
-            edge_len: &edge_of,
-            route: &route,
-            height: &height,
-            area: &area,
-            min_lake_area_m2: 2.0 * pixel * pixel,
-            river_slope: p.river_slope(),
-        })
-    });
-    if let Some(l) = &relief_levels {
-        report.lakes = l.lakes;
-        report.breached = l.breached;
     }
 
     // --- Altitudes (eq. 3–4) ---
@@ -261,6 +311,17 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
             gradient[c] = (p.max_river_altitude_m - mouth_ground) / (l_up[c]).max(p.min_river_length_m);
         } else {
             vert.ground = sea + p.riverbed_edge_height_m * altitude_random(vert.seed);
+        }
+    }
+    // A closed basin's pit: its terminal lake's floor, or a dry pan, where its rivers end.
+    if let Some(l) = &relief_levels {
+        for &s in &sinks {
+            let si = s as usize;
+            let vert = &mut mesh.vertices[si];
+            vert.water = sea + l.water[si];
+            vert.ground = sea + elevation[si].unwrap_or(0.0).min(l.water[si] - p.riverbed_edge_height_m);
+            vert.flags.insert(VertexFlags::SINK | VertexFlags::RIVER);
+            gradient[si] = (p.max_river_altitude_m - vert.ground) / l_up[si].max(p.min_river_length_m);
         }
     }
     for &v in &order {
@@ -308,7 +369,10 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     sea_floor(mesh, &adj, params, &elevation);
 
     // --- Mountain vertices between rivers (eq. 5) ---
-    report.mountains = insert_mountains(mesh, params, relief, &mut gradient);
+    if !report.lake_of.is_empty() {
+        report.lake_of.resize(n, NONE);
+    }
+    report.mountains = insert_mountains(mesh, params, relief, &mut gradient, &mut report.lake_of);
     report
 }
 
@@ -376,7 +440,13 @@ fn sea_floor(mesh: &mut Mesh, adj: &crate::mesh::Adjacency, p: &Params, elevatio
 /// Inserts a continent vertex into every continent edge between river or coast vertices, and
 /// into coast edges joining two river mouths; the bisection closure splits whatever edges
 /// must go first, with the paper's split rules. Returns the number of mountain vertices made.
-fn insert_mountains(mesh: &mut Mesh, p: &Params, relief: Option<&Map>, gradient: &mut Vec<f64>) -> usize {
+fn insert_mountains(
+    mesh: &mut Mesh,
+    p: &Params,
+    relief: Option<&Map>,
+    gradient: &mut Vec<f64>,
+    lake_of: &mut Vec<u32>,
+) -> usize {
     let wet = VertexFlags(VertexFlags::RIVER.0 | VertexFlags::COAST.0);
     let targets: Vec<(u32, [u32; 2])> = (0..mesh.edges.len() as u32)
         .filter(|&e| {
@@ -392,7 +462,7 @@ fn insert_mountains(mesh: &mut Mesh, p: &Params, relief: Option<&Map>, gradient:
         .collect();
     let mut mountains = 0;
     let mut make = |m: &Mesh, site: &SplitSite| {
-        let (v, kinds) = base_split_vertex(m, site, p, relief, gradient);
+        let (v, kinds) = base_split_vertex(m, site, p, relief, gradient, lake_of);
         if v.flags.contains(VertexFlags::MOUNTAIN) {
             mountains += 1;
         }
@@ -416,6 +486,7 @@ fn base_split_vertex(
     p: &Params,
     relief: Option<&Map>,
     gradient: &mut Vec<f64>,
+    lake_of: &mut Vec<u32>,
 ) -> (Vertex, [EdgeKind; 4]) {
     let diamond = Diamond::new(m, site);
     let seed = split_seed(&diamond);
@@ -474,8 +545,19 @@ fn base_split_vertex(
                 Some(h) => h,
                 None => vr.ground + gradient[r as usize] * horizontal(vr) * xi,
             };
-            let g = wanted.min(hi).max(lo);
-            (pos, g, g, 0.0, VertexFlags::MOUNTAIN)
+            // Between two shores of one lake, ground the map has below the lake's surface is
+            // its bed, under water (no island the map does not have).
+            let lake = lake_of.get(site.a as usize).copied().filter(|&l| l != NONE);
+            let surface = va.water.max(vb.water);
+            match mapped {
+                Some(h) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h < surface => {
+                    (pos, h.min(surface - p.riverbed_edge_height_m), surface, 0.0, VertexFlags::MOUNTAIN)
+                }
+                _ => {
+                    let g = wanted.min(hi).max(lo);
+                    (pos, g, g, 0.0, VertexFlags::MOUNTAIN)
+                }
+            }
         }
     };
     let mut v = Vertex::new(lift(pos, m.radius, 0.0), seed);
@@ -483,6 +565,10 @@ fn base_split_vertex(
     v.water = water;
     v.flags = flags;
     gradient.push(grad);
+    if !lake_of.is_empty() {
+        let (la, lb) = (lake_of[site.a as usize], lake_of[site.b as usize]);
+        lake_of.push(if la == lb && water > ground { la } else { NONE });
+    }
     (v, kinds)
 }
 

@@ -1,9 +1,19 @@
-//! Rivers as GeoJSON (RFC 7946): one Feature per reach of the river network, coordinates
-//! `[lon, lat, water_altitude_m]` ordered downstream, altitude relative to sea level.
+//! Rivers and lakes as GeoJSON (RFC 7946): one Feature per reach of the river network,
+//! coordinates `[lon, lat, water_altitude_m]` ordered downstream, altitude relative to sea
+//! level; and one per lake.
 //!
-//! Positions are rounded to 1e-6° (about 0.1 m) and altitudes to 0.01 m. Each feature carries
-//! `id` (also as the Feature's `id`), `downstream_id` (the reach it flows into, `null` at a mouth
-//! or where the network ends), `strahler`, `upstream_area_km2` and `length_km`.
+//! Positions are rounded to 1e-6° (about 0.1 m) and altitudes to 0.01 m. Each reach carries
+//! `kind: "river"`, `id` (also as the Feature's `id`), `downstream_id` (the reach it flows into,
+//! `null` at a mouth, a closed basin's pit or where the network ends), `strahler`,
+//! `upstream_area_km2`, `length_km` and `lake_id` (the first lake it flows into or through,
+//! else `null`).
+//!
+//! A lake is a Polygon (a MultiPolygon if its water stands in several pieces) with
+//! `kind: "lake"`, `lake_id`, `water_altitude_m`, `area_km2` and `endorheic` (no outlet to the
+//! sea); its Feature `id` is `"lake-<lake_id>"`. Its shore is [`crate::build::lakes::outlines`]:
+//! exterior rings counter-clockwise, islands clockwise, every position at the lake's level. A
+//! lake's rings are unwrapped across the antimeridian (longitudes may pass ±180° there) rather
+//! than cut.
 //!
 //! **Antimeridian.** Following RFC 7946 §3.1.9, a reach that crosses ±180° is cut there into a
 //! MultiLineString: the part before the crossing ends on 180° (or -180°) and the next part starts
@@ -13,9 +23,10 @@
 //! repeated, so every LineString has two positions and every `downstream_id` still resolves.
 
 use crate::build::continents::lat_lon;
+use crate::build::lakes::{outlines, Lake};
 use crate::build::network::Reach;
-use crate::build::RiverGraph;
-use crate::mesh::Mesh;
+use crate::build::Planet;
+use crate::mesh::{Mesh, NONE};
 use crate::params::Params;
 use serde_json::{json, Value};
 
@@ -67,7 +78,8 @@ fn coordinates(part: &[[f64; 3]]) -> Value {
     Value::Array(coords)
 }
 
-fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64) -> Value {
+fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64, lake_of: &[u32]) -> Value {
+    let lake_id = reach.vertices.iter().map(|&v| lake_of.get(v as usize).copied().unwrap_or(NONE)).find(|&l| l != NONE);
     let points: Vec<[f64; 3]> = reach
         .vertices
         .iter()
@@ -88,18 +100,92 @@ fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64) -> Value {
         "id": reach.id,
         "geometry": geometry,
         "properties": {
+            "kind": "river",
             "id": reach.id,
             "downstream_id": reach.downstream_id,
             "strahler": reach.strahler,
             "upstream_area_km2": round_to(reach.upstream_area_m2 / 1e6, 3),
             "length_km": round_to(reach.length_m / 1e3, 3),
+            "lake_id": lake_id,
         },
     })
 }
 
-/// The river network as a GeoJSON FeatureCollection, one feature per reach.
-pub fn rivers_geojson(mesh: &Mesh, graph: &RiverGraph, params: &Params) -> String {
-    let features: Vec<Value> = graph.reaches(mesh).iter().map(|r| feature(mesh, r, params.sea_level_m)).collect();
+/// Twice the signed area of a `[lon, lat]` ring (positive counter-clockwise).
+fn signed_area(ring: &[[f64; 2]]) -> f64 {
+    ring.windows(2).map(|w| w[0][0] * w[1][1] - w[1][0] * w[0][1]).sum()
+}
+
+/// Whether `p` lies inside `ring` (even-odd rule).
+fn contains(ring: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let mut inside = false;
+    for w in ring.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if (a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+fn lake_feature(lake: &Lake, rings: &[Vec<glam::DVec3>]) -> Option<Value> {
+    // Longitudes unwrapped along each ring.
+    let flat: Vec<Vec<[f64; 2]>> = rings
+        .iter()
+        .map(|ring| {
+            let mut prev: Option<f64> = None;
+            ring.iter()
+                .map(|&p| {
+                    let (lat, mut lon) = lat_lon(p);
+                    if let Some(q) = prev {
+                        lon = q + (lon - q + 540.0).rem_euclid(360.0) - 180.0;
+                    }
+                    prev = Some(lon);
+                    [lon, lat]
+                })
+                .collect()
+        })
+        .collect();
+    let outer: Vec<&Vec<[f64; 2]>> = flat.iter().filter(|r| signed_area(r) > 0.0).collect();
+    let holes: Vec<&Vec<[f64; 2]>> = flat.iter().filter(|r| signed_area(r) <= 0.0).collect();
+    let level = round_to(lake.water_altitude_m, 2);
+    let ring_json =
+        |r: &[[f64; 2]]| Value::Array(r.iter().map(|p| json!([round_to(p[0], 6), round_to(p[1], 6), level])).collect());
+    let polygons: Vec<Value> = outer
+        .iter()
+        .map(|o| {
+            let mut rings = vec![ring_json(o)];
+            rings.extend(holes.iter().filter(|h| contains(o, h[0])).map(|h| ring_json(h)));
+            Value::Array(rings)
+        })
+        .collect();
+    let geometry = match polygons.len() {
+        0 => return None,
+        1 => json!({"type": "Polygon", "coordinates": polygons[0]}),
+        _ => json!({"type": "MultiPolygon", "coordinates": polygons}),
+    };
+    Some(json!({
+        "type": "Feature",
+        "id": format!("lake-{}", lake.id),
+        "geometry": geometry,
+        "properties": {
+            "kind": "lake",
+            "lake_id": lake.id,
+            "water_altitude_m": level,
+            "area_km2": round_to(lake.area_m2 / 1e6, 3),
+            "endorheic": lake.endorheic,
+        },
+    }))
+}
+
+/// The river network and the lakes as a GeoJSON FeatureCollection: one feature per reach,
+/// then one per lake.
+pub fn rivers_geojson(planet: &Planet, params: &Params) -> String {
+    let mesh = &planet.mesh;
+    let mut features: Vec<Value> =
+        planet.rivers.reaches(mesh).iter().map(|r| feature(mesh, r, params.sea_level_m, &planet.lake_of)).collect();
+    let shores = outlines(mesh, &planet.lake_of, planet.lakes.len());
+    features.extend(planet.lakes.iter().filter_map(|l| lake_feature(l, &shores[l.id as usize])));
     json!({"type": "FeatureCollection", "features": features}).to_string()
 }
 
@@ -127,7 +213,7 @@ mod tests {
     fn rivers_geojson_is_a_valid_downstream_network() {
         let planet = test_planet();
         let params = Params::default();
-        let text = rivers_geojson(&planet.mesh, &planet.rivers, &params);
+        let text = rivers_geojson(planet, &params);
         let doc: Value = serde_json::from_str(&text).expect("valid JSON");
         assert_eq!(doc["type"], "FeatureCollection");
         let features = doc["features"].as_array().unwrap();
@@ -141,6 +227,7 @@ mod tests {
             assert_eq!(f["type"], "Feature");
             let props = &f["properties"];
             assert_eq!(f["id"], props["id"]);
+            assert_eq!((&props["kind"], &props["lake_id"]), (&json!("river"), &Value::Null));
             match &props["downstream_id"] {
                 Value::Null => {}
                 d => {
@@ -175,9 +262,10 @@ mod tests {
     fn rivers_geojson_is_deterministic() {
         let planet = test_planet();
         let params = Params::default();
-        let a = rivers_geojson(&planet.mesh, &planet.rivers, &params);
-        let graph = RiverGraph::from_mesh(&planet.mesh);
-        assert_eq!(a, rivers_geojson(&planet.mesh, &graph, &params));
+        let a = rivers_geojson(planet, &params);
+        let mut again = planet.clone();
+        again.rivers = crate::build::RiverGraph::from_mesh(&planet.mesh);
+        assert_eq!(a, rivers_geojson(&again, &params));
     }
 
     #[test]

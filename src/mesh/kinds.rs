@@ -49,6 +49,9 @@ impl VertexFlags {
     pub const MOUNTAIN: VertexFlags = VertexFlags(32);
     /// Made by a split, so a collapse may remove it; base-mesh vertices never collapse.
     pub const REFINED: VertexFlags = VertexFlags(64);
+    /// The lowest vertex of a basin with no outlet to the sea, where its rivers end (in a
+    /// terminal lake or a dry pan).
+    pub const SINK: VertexFlags = VertexFlags(128);
 
     pub const fn empty() -> VertexFlags {
         VertexFlags(0)

@@ -153,7 +153,7 @@ fn render(
             export::view::view_glb(adapter.mesh(), params, origin)
                 .map_err(|e| ApiError::unprocessable("too_large", "max_faces", format!("{e}: ask for fewer faces")))?
         }
-        (_, Job::Rivers) => export::rivers_geojson(mesh, &planet.rivers, params).into_bytes(),
+        (_, Job::Rivers) => export::rivers_geojson(planet, params).into_bytes(),
         (Resource::Landmask, Job::Raster { width }) => export::landmask_png(mesh, *width, (*width / 2).max(1)),
         (Resource::Preview, Job::Raster { width }) => {
             export::preview_png(mesh, &planet.rivers, params, *width, (*width / 2).max(1))
@@ -166,9 +166,9 @@ fn render(
 /// a change to the software changes their bytes (revision 2: eq. 6 per side of the frustum, the
 /// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
 /// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
-/// own tangent plane), so that caches holding the old bytes under a strong, immutable `ETag` see
+/// own tangent plane; 5: closed basins, lakes in `rivers.geojson`), so that caches holding the old bytes under a strong, immutable `ETag` see
 /// a new one.
-const ANSWERS_REVISION: &str = "4";
+const ANSWERS_REVISION: &str = "5";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

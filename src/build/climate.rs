@@ -1,0 +1,317 @@
+//! A planet's climate: mean annual precipitation, temperature, evaporation and runoff, from its
+//! land, its altitudes and its latitudes, on a 1° latitude/longitude grid. It decides which
+//! basins hold water enough to overflow to the sea and which end in a terminal lake
+//! ([`super::basins`]). The model is deliberately small and works for any planet:
+//!
+//! 1. **Zonal precipitation** `P0(lat)` over and next to the ocean: wet tropics, dry
+//!    subtropics (20-30°), wet mid-latitudes, dry poles (key points in [`ZONAL_MM`], after the
+//!    zonal means of the GPCP climatology).
+//! 2. **Moisture carried by the prevailing winds**: the trades blow from the east between the
+//!    equator and 30°, the westerlies from the west between 30° and 60°, polar easterlies
+//!    beyond. Along each row of the grid, in the wind's direction, the air's moisture `m` is 1
+//!    over the ocean and decays over land with distance (e-folding [`TROPICAL_DECAY_KM`] in the
+//!    tropics, where rain evaporates and falls again, [`DECAY_KM`] elsewhere) and with uplift:
+//!    air that climbs `dh` keeps `exp(-dh / UPLIFT_M)` of its moisture and rains the rest on the
+//!    windward slope ([`OROGRAPHIC_GAIN`]). Leeward of a range is a rain shadow.
+//! 3. **Poleward flow** between 10° and 50°: along each column from the equator, tropical
+//!    moist air ([`POLEWARD_MM`]) carried and rained out the same way, a stand-in for the
+//!    monsoons and the continents' wet eastern flanks.
+//! 4. **Distance to the sea** in any direction stands for the other winds: moisture is at
+//!    least `NEAR_SEA * exp(-d / NEAR_SEA_KM)` (0.8 and 2,000 km in the tropics).
+//! 5. `P = P0(lat) * m` plus the orographic rain, or what the poleward flow brings if more.
+//! 6. **Temperature** `T = 28 °C - 30 °C * sin²(lat) - 6.5 °C/km * altitude`; potential
+//!    (open-water) evaporation `E0 = 50 mm * T` per year for `T > 0`.
+//! 7. **Runoff** from land: `P - AET` with actual evaporation by Budyko's curve in Fu's form
+//!    (`AET / P = 1 + E0/P - (1 + (E0/P)^w)^(1/w)`, `w = 2.6`).
+
+use crate::geo::direction;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// Zonal precipitation (mm/yr) at key absolute latitudes (°), interpolated linearly.
+const ZONAL_MM: [(f64, f64); 12] = [
+    (0.0, 2400.0),
+    (10.0, 1900.0),
+    (20.0, 850.0),
+    (25.0, 450.0),
+    (30.0, 550.0),
+    (35.0, 800.0),
+    (40.0, 1000.0),
+    (50.0, 1000.0),
+    (60.0, 800.0),
+    (70.0, 450.0),
+    (80.0, 180.0),
+    (90.0, 100.0),
+];
+const TROPICAL_DECAY_KM: f64 = 6000.0;
+const DECAY_KM: f64 = 3000.0;
+const BOREAL_DECAY_KM: f64 = 5000.0;
+/// Over open water the air regains moisture over this fetch.
+const FETCH_KM: f64 = 2000.0;
+/// How fast the air sinks back after a crest (m per km).
+const SETTLE_M_PER_KM: f64 = 1.0;
+/// Latitudes of the poleward flow, and the share of its moisture that counts.
+const POLEWARD_LAT: std::ops::Range<f64> = 10.0..50.0;
+const POLEWARD: f64 = 0.8;
+/// What the poleward flow rains where it is saturated (mm/yr): tropical air.
+const POLEWARD_MM: f64 = 1400.0;
+const UPLIFT_M: f64 = 3000.0;
+const OROGRAPHIC_GAIN: f64 = 1.5;
+const NEAR_SEA: f64 = 0.5;
+const TROPICAL_NEAR_SEA: f64 = 0.8;
+const TROPICAL_NEAR_SEA_KM: f64 = 2000.0;
+const NEAR_SEA_KM: f64 = 800.0;
+/// Fu's Budyko parameter.
+const FU_W: f64 = 2.6;
+const EARTH_RADIUS_KM: f64 = 6371.0;
+
+/// Grid cells per degree, and the grid's size.
+const CELLS_PER_DEG: usize = 1;
+pub const WIDTH: usize = 360 * CELLS_PER_DEG;
+pub const HEIGHT: usize = 180 * CELLS_PER_DEG;
+
+/// Mean annual climate on a global latitude/longitude grid (row 0 at the north pole).
+#[derive(Clone, Debug)]
+pub struct Climate {
+    pub width: usize,
+    pub height: usize,
+    /// Precipitation, mm per year.
+    pub precip_mm: Vec<f32>,
+}
+
+/// Zonal precipitation (mm/yr) at a latitude.
+pub fn zonal_mm(lat: f64) -> f64 {
+    let a = lat.abs().min(90.0);
+    let i = ZONAL_MM.iter().position(|&(l, _)| l >= a).unwrap_or(ZONAL_MM.len() - 1).max(1);
+    let ((l0, p0), (l1, p1)) = (ZONAL_MM[i - 1], ZONAL_MM[i]);
+    p0 + (p1 - p0) * ((a - l0) / (l1 - l0)).clamp(0.0, 1.0)
+}
+
+/// Mean annual temperature (°C) at a latitude and altitude above sea level (m).
+pub fn temperature_c(lat: f64, altitude_m: f64) -> f64 {
+    let s = lat.to_radians().sin();
+    28.0 - 30.0 * s * s - 0.0065 * altitude_m.max(0.0)
+}
+
+/// Potential (open-water) evaporation, mm per year.
+pub fn potential_evaporation_mm(lat: f64, altitude_m: f64) -> f64 {
+    50.0 * temperature_c(lat, altitude_m).max(0.0)
+}
+
+/// Runoff (mm/yr) of land with precipitation `p` and potential evaporation `e0` (Budyko-Fu).
+pub fn runoff_mm(p: f64, e0: f64) -> f64 {
+    if p <= 0.0 {
+        return 0.0;
+    }
+    let x = e0 / p;
+    let aet = p * (1.0 + x - (1.0 + x.powf(FU_W)).powf(1.0 / FU_W));
+    (p - aet).max(0.0)
+}
+
+/// Decay length of moisture over land (km): rain falls and evaporates again in the tropics.
+fn decay_km(lat: f64) -> f64 {
+    match lat.abs() {
+        a if a < 15.0 => TROPICAL_DECAY_KM,
+        a if a < 40.0 => DECAY_KM,
+        _ => BOREAL_DECAY_KM,
+    }
+}
+
+/// Wind direction along a row: +1 towards the east (westerlies), -1 towards the west.
+fn wind(lat: f64) -> i64 {
+    if (35.0..60.0).contains(&lat.abs()) {
+        1
+    } else {
+        -1
+    }
+}
+
+impl Climate {
+    /// The climate of a planet from whether each cell of the [`WIDTH`] x [`HEIGHT`] grid is
+    /// land and its altitude (m above sea level), row-major from the north-west corner, cell
+    /// centres as [`crate::mesh::raster::SphereRaster`] places them.
+    pub fn new(cells: &[(bool, f64)]) -> Climate {
+        let (w, h) = (WIDTH, HEIGHT);
+        assert_eq!(cells.len(), w * h, "one cell per grid cell");
+        let step = 1.0 / CELLS_PER_DEG as f64;
+        let lat_of = |r: usize| 90.0 - (r as f64 + 0.5) * step;
+        let near = sea_distance_km(cells, w, h, step);
+        // Moisture along the rows (prevailing winds), then along the columns from the
+        // equator (the poleward flow on the continents' eastern flanks).
+        let mut zonal = vec![(0.0f64, 0.0f64); w * h];
+        for r in 0..h {
+            let lat = lat_of(r);
+            let dx = step.to_radians() * EARTH_RADIUS_KM * lat.to_radians().cos().max(0.01);
+            let mut path: Vec<usize> = (0..w).map(|c| r * w + c).collect();
+            if wind(lat) < 0 {
+                path.reverse();
+            }
+            advect(cells, &path, true, 1.0, dx, decay_km(lat), &mut zonal);
+        }
+        let mut meridional = vec![(0.0f64, 0.0f64); w * h];
+        let dy = step.to_radians() * EARTH_RADIUS_KM;
+        for c in 0..w {
+            for north in [true, false] {
+                let mut path: Vec<usize> = (0..h)
+                    .map(|r| r * w + c)
+                    .filter(|&i| (lat_of(i / w) > 0.0) == north && POLEWARD_LAT.contains(&lat_of(i / w).abs()))
+                    .collect();
+                if north {
+                    path.reverse();
+                }
+                if let Some(&first) = path.first() {
+                    let m0 = if cells[first].0 { zonal[first].0 } else { 1.0 };
+                    advect(cells, &path, false, m0, dy, DECAY_KM, &mut meridional);
+                }
+            }
+        }
+        let mut precip = vec![0.0f32; w * h];
+        for (i, cell) in cells.iter().enumerate() {
+            let p0 = zonal_mm(lat_of(i / w));
+            precip[i] = if cell.0 {
+                let floor = if lat_of(i / w).abs() < 15.0 {
+                    TROPICAL_NEAR_SEA * (-near[i] / TROPICAL_NEAR_SEA_KM).exp()
+                } else {
+                    NEAR_SEA * (-near[i] / NEAR_SEA_KM).exp()
+                };
+                let own = p0 * (zonal[i].0.max(floor) + OROGRAPHIC_GAIN * zonal[i].1);
+                let tropical = POLEWARD_MM * POLEWARD * (meridional[i].0 + OROGRAPHIC_GAIN * meridional[i].1);
+                own.max(tropical) as f32
+            } else {
+                p0 as f32
+            };
+        }
+        Climate { width: w, height: h, precip_mm: precip }
+    }
+
+    /// Precipitation (mm/yr) in the cell holding a latitude and longitude.
+    pub fn precip_at(&self, lat: f64, lon: f64) -> f64 {
+        let step = 1.0 / CELLS_PER_DEG as f64;
+        let r = (((90.0 - lat) / step) as usize).min(self.height - 1);
+        let c = (((lon + 180.0) / step).floor() as i64).rem_euclid(self.width as i64) as usize;
+        f64::from(self.precip_mm[r * self.width + c])
+    }
+}
+
+/// Carries moisture along `path`, cells listed in the wind's direction `step_km` apart: 1
+/// over the ocean (recharged over a fetch of [`FETCH_KM`]), decaying over land by `decay_km` and
+/// by uplift. A `ring` (a row) starts where the air leaves the ocean and goes round twice to
+/// settle; an open path starts with moisture `m0`. Writes, per land cell, the moisture and the
+/// share rained out by uplift there.
+fn advect(
+    cells: &[(bool, f64)],
+    path: &[usize],
+    ring: bool,
+    m0: f64,
+    step_km: f64,
+    decay_km: f64,
+    out: &mut [(f64, f64)],
+) {
+    let n = path.len();
+    let decay = (-step_km / decay_km).exp();
+    let recharge = 1.0 - (-step_km / FETCH_KM).exp();
+    let ocean = path.iter().position(|&i| !cells[i].0);
+    let (start, laps, mut m) = match (ring, ocean) {
+        (true, Some(o)) => (o, 2, 1.0),
+        (true, None) => (0, 2, NEAR_SEA),
+        (false, _) => (0, 1, m0),
+    };
+    let mut air = 0.0f64;
+    for k in 0..laps * n {
+        let i = path[(start + k) % n];
+        let (land, alt) = cells[i];
+        if !land {
+            m += (1.0 - m) * recharge;
+            air = 0.0;
+            continue;
+        }
+        let alt = alt.max(0.0);
+        // The air rides over the terrain, settling back slowly after a crest: only ground that
+        // rises above it lifts it (small bumps of a plateau count once).
+        let carried = m * decay;
+        let rise = (alt - air).max(0.0);
+        m = carried * (-rise / UPLIFT_M).exp();
+        air = alt.max(air - SETTLE_M_PER_KM * step_km);
+        if k + n >= laps * n {
+            out[i] = (m, carried - m);
+        }
+    }
+}
+
+/// Great-circle distance (km) from every cell to the nearest sea cell, along 8-connected steps.
+fn sea_distance_km(cells: &[(bool, f64)], w: usize, h: usize, step: f64) -> Vec<f64> {
+    #[derive(PartialEq)]
+    struct Item(f64, usize);
+    impl Eq for Item {}
+    impl PartialOrd for Item {
+        fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+            Some(self.cmp(o))
+        }
+    }
+    impl Ord for Item {
+        fn cmp(&self, o: &Self) -> Ordering {
+            o.0.total_cmp(&self.0).then(o.1.cmp(&self.1))
+        }
+    }
+    let centre = |i: usize| direction(90.0 - ((i / w) as f64 + 0.5) * step, -180.0 + ((i % w) as f64 + 0.5) * step);
+    let mut dist = vec![f64::INFINITY; w * h];
+    let mut heap = BinaryHeap::new();
+    for (i, c) in cells.iter().enumerate() {
+        if !c.0 {
+            dist[i] = 0.0;
+            heap.push(Item(0.0, i));
+        }
+    }
+    while let Some(Item(d, i)) = heap.pop() {
+        if d > dist[i] {
+            continue;
+        }
+        let (r, c) = ((i / w) as i64, (i % w) as i64);
+        for (dr, dc) in [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)] {
+            let rr = r + dr;
+            if rr < 0 || rr >= h as i64 {
+                continue;
+            }
+            let j = rr as usize * w + (c + dc).rem_euclid(w as i64) as usize;
+            let nd = d + centre(i).angle_between(centre(j)) * EARTH_RADIUS_KM;
+            if nd < dist[j] {
+                dist[j] = nd;
+                heap.push(Item(nd, j));
+            }
+        }
+    }
+    dist
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn runoff_follows_budyko() {
+        // Wet and cool: most rain runs off; dry and hot: almost none does.
+        assert!(runoff_mm(2000.0, 500.0) > 1400.0);
+        assert!(runoff_mm(200.0, 2000.0) < 5.0);
+        assert_eq!(runoff_mm(0.0, 1000.0), 0.0);
+        let r = runoff_mm(1000.0, 1000.0);
+        assert!((200.0..400.0).contains(&r), "{r}");
+    }
+
+    #[test]
+    fn a_range_casts_a_rain_shadow_and_interiors_dry_out() {
+        // Westerlies at 45°: an ocean west of 0°, a 3 km range at 5-7° E, plains beyond.
+        let cells: Vec<(bool, f64)> = (0..WIDTH * HEIGHT)
+            .map(|i| {
+                let lon = -180.0 + (i % WIDTH) as f64 + 0.5;
+                let land = lon > 0.0 && lon < 120.0;
+                (land, if (5.0..7.0).contains(&lon) { 3000.0 } else { 200.0 })
+            })
+            .collect();
+        let c = Climate::new(&cells);
+        let (windward, lee, far) = (c.precip_at(45.0, 5.5), c.precip_at(45.0, 9.5), c.precip_at(45.0, 60.0));
+        assert!(windward > 1.5 * lee, "windward {windward} lee {lee}");
+        assert!(far < 0.5 * c.precip_at(45.0, 1.5), "interior {far}");
+        // Trades at 15°: the same coast is downwind of the continent.
+        assert!(c.precip_at(15.0, 118.5) > c.precip_at(15.0, 1.5));
+    }
+}
