@@ -11,13 +11,21 @@
 //! The flood tree then drains a closed depression to its lowest vertex, its *pit*: the path
 //! from the pit to where the depression used to spill is reversed.
 
-use super::relief::{Depressions, Flood};
+use super::relief::{Depressions, Flood, BREACH_DEPTH_M};
 use crate::mesh::NONE;
+
+/// The surplus at which an overflowing depression [`BREACH_DEPTH_M`] deep is breached (m³/yr).
+const GORGE_FLOW_M3: f64 = 1.0e10;
 
 /// Level of each depression's terminal lake, `None` where it overflows to the sea.
 /// `runoff[v]` is the water a land vertex yields (m³/yr); `net_loss[v]` what open water at the
 /// vertex loses, evaporation less precipitation (m³/yr, negative where rain exceeds it).
-pub fn terminal_levels(flood: &Flood, dep: &Depressions, runoff: &[f64], net_loss: &[f64]) -> Vec<Option<f64>> {
+///
+/// A depression that overflows with a surplus `Q` (m³/yr) is breached instead of kept as a
+/// lake when it is at most `BREACH_DEPTH_M * sqrt(Q / 10 km³/yr)` deep: a river of that size
+/// cuts a gorge through its dam (the Congo's through the Crystal Mountains, which a 9 km DEM
+/// loses), so its depression is the map's artefact, not a lake. `dep.kept` records it.
+pub fn terminal_levels(flood: &Flood, dep: &mut Depressions, runoff: &[f64], net_loss: &[f64]) -> Vec<Option<f64>> {
     let n = flood.height.len();
     let count = dep.spill.len();
     // Each depression's vertices, lowest first.
@@ -42,16 +50,27 @@ pub fn terminal_levels(flood: &Flood, dep: &Depressions, runoff: &[f64], net_los
             let mut level = None;
             for (k, &w) in members[c].iter().enumerate() {
                 loss += runoff[w as usize] + net_loss[w as usize];
+                // A flat of the map (a lake's surface in the map) floods as one.
+                let here = flood.route[w as usize];
+                if members[c].get(k + 1).is_some_and(|&x| flood.route[x as usize] == here) {
+                    continue;
+                }
                 if loss >= inflow {
                     // The lake covers this vertex and the ones below it.
-                    let above = members[c].get(k + 1).map_or(dep.spill[c], |&x| flood.route[x as usize]);
-                    level = Some(0.5 * (flood.route[w as usize] + above));
+                    level = Some(here);
                     break;
                 }
             }
-            if let Some(l) = level {
-                terminal[c] = Some(l);
-                acc[vi] = 0.0;
+            match level {
+                Some(l) => {
+                    terminal[c] = Some(l);
+                    acc[vi] = 0.0;
+                }
+                None => {
+                    let surplus = inflow - loss;
+                    let cut = BREACH_DEPTH_M * (surplus / GORGE_FLOW_M3).max(0.0).sqrt();
+                    dep.kept[c] = dep.spill[c] - dep.floor[c] > cut;
+                }
             }
         }
         acc[u] += acc[vi];
@@ -132,11 +151,11 @@ mod tests {
             river_slope: 1.0e-5,
         };
         let flood = Flood { order: &order, downstream: &downstream, ..terrain };
-        let dep = depressions(&flood);
+        let mut dep = depressions(&flood);
         assert_eq!((dep.spill.len(), dep.pit[0], dep.root[0]), (1, 3, 2));
         let runoff = vec![runoff_each; 6];
         let loss = vec![loss_each; 6];
-        let terminal = terminal_levels(&flood, &dep, &runoff, &loss);
+        let terminal = terminal_levels(&flood, &mut dep, &runoff, &loss);
         let (outlets, new_order) = drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);
         let flood = Flood { order: &new_order, downstream: &downstream, ..terrain };
         let l = levels(&flood, &dep, &terminal);

@@ -15,12 +15,14 @@
 //!    windward slope ([`OROGRAPHIC_GAIN`]). Leeward of a range is a rain shadow.
 //! 3. **Poleward flow** between 10° and 50°: along each column from the equator, tropical
 //!    moist air ([`POLEWARD_MM`]) carried and rained out the same way, a stand-in for the
-//!    monsoons and the continents' wet eastern flanks.
+//!    monsoons and the continents' wet eastern flanks. It takes its moisture from seas east of
+//!    land (warm currents); off west coasts (cold currents) it gets [`COLD_SEA`] of it.
 //! 4. **Distance to the sea** in any direction stands for the other winds: moisture is at
 //!    least `NEAR_SEA * exp(-d / NEAR_SEA_KM)` (0.8 and 2,000 km in the tropics).
 //! 5. `P = P0(lat) * m` plus the orographic rain, or what the poleward flow brings if more.
 //! 6. **Temperature** `T = 28 °C - 30 °C * sin²(lat) - 6.5 °C/km * altitude`; potential
-//!    (open-water) evaporation `E0 = 50 mm * T` per year for `T > 0`.
+//!    (open-water) evaporation `E0 = 50 mm * T * (1 + 0.8 exp(-P / 400 mm))` per year for
+//!    `T > 0`: dry air takes up more.
 //! 7. **Runoff** from land: `P - AET` with actual evaporation by Budyko's curve in Fu's form
 //!    (`AET / P = 1 + E0/P - (1 + (E0/P)^w)^(1/w)`, `w = 2.6`).
 
@@ -53,6 +55,9 @@ const SETTLE_M_PER_KM: f64 = 1.0;
 /// Latitudes of the poleward flow, and the share of its moisture that counts.
 const POLEWARD_LAT: std::ops::Range<f64> = 10.0..50.0;
 const POLEWARD: f64 = 0.8;
+/// Sea east of land within this distance feeds the poleward flow fully; other sea this much.
+const WARM_KM: f64 = 1500.0;
+const COLD_SEA: f64 = 0.3;
 /// What the poleward flow rains where it is saturated (mm/yr): tropical air.
 const POLEWARD_MM: f64 = 1400.0;
 const UPLIFT_M: f64 = 3000.0;
@@ -61,6 +66,9 @@ const NEAR_SEA: f64 = 0.5;
 const TROPICAL_NEAR_SEA: f64 = 0.8;
 const TROPICAL_NEAR_SEA_KM: f64 = 2000.0;
 const NEAR_SEA_KM: f64 = 800.0;
+/// Evaporation's rise in dry air, and the rain (mm/yr) below which the air counts as dry.
+const DRY_AIR: f64 = 0.5;
+const DRY_MM: f64 = 400.0;
 /// Fu's Budyko parameter.
 const FU_W: f64 = 2.6;
 const EARTH_RADIUS_KM: f64 = 6371.0;
@@ -93,9 +101,10 @@ pub fn temperature_c(lat: f64, altitude_m: f64) -> f64 {
     28.0 - 30.0 * s * s - 0.0065 * altitude_m.max(0.0)
 }
 
-/// Potential (open-water) evaporation, mm per year.
-pub fn potential_evaporation_mm(lat: f64, altitude_m: f64) -> f64 {
-    50.0 * temperature_c(lat, altitude_m).max(0.0)
+/// Potential (open-water) evaporation, mm per year, where `precip_mm` falls: dry air takes up
+/// more (up to [`DRY_AIR`] more in a desert).
+pub fn potential_evaporation_mm(lat: f64, altitude_m: f64, precip_mm: f64) -> f64 {
+    50.0 * temperature_c(lat, altitude_m).max(0.0) * (1.0 + DRY_AIR * (-precip_mm / DRY_MM).exp())
 }
 
 /// Runoff (mm/yr) of land with precipitation `p` and potential evaporation `e0` (Budyko-Fu).
@@ -138,6 +147,22 @@ impl Climate {
         let near = sea_distance_km(cells, w, h, step);
         // Moisture along the rows (prevailing winds), then along the columns from the
         // equator (the poleward flow on the continents' eastern flanks).
+        // Moisture of the sea: full for the prevailing winds; for the poleward flow only on a
+        // continent's eastern flank (land within WARM_KM to the west: warm western boundary
+        // currents), not off west coasts, where cold currents flow.
+        let full = vec![1.0f64; w * h];
+        let mut warm = vec![COLD_SEA; w * h];
+        for r in 0..h {
+            let dx = step.to_radians() * EARTH_RADIUS_KM * lat_of(r).to_radians().cos().max(0.01);
+            let mut since_land = f64::INFINITY;
+            for k in 0..2 * w {
+                let i = r * w + k % w;
+                since_land = if cells[i].0 { 0.0 } else { since_land + dx };
+                if k >= w && !cells[i].0 && since_land <= WARM_KM {
+                    warm[i] = 1.0;
+                }
+            }
+        }
         let mut zonal = vec![(0.0f64, 0.0f64); w * h];
         for r in 0..h {
             let lat = lat_of(r);
@@ -146,7 +171,7 @@ impl Climate {
             if wind(lat) < 0 {
                 path.reverse();
             }
-            advect(cells, &path, true, 1.0, dx, decay_km(lat), &mut zonal);
+            advect(cells, &full, &path, true, 1.0, dx, decay_km(lat), &mut zonal);
         }
         let mut meridional = vec![(0.0f64, 0.0f64); w * h];
         let dy = step.to_radians() * EARTH_RADIUS_KM;
@@ -161,7 +186,7 @@ impl Climate {
                 }
                 if let Some(&first) = path.first() {
                     let m0 = if cells[first].0 { zonal[first].0 } else { 1.0 };
-                    advect(cells, &path, false, m0, dy, DECAY_KM, &mut meridional);
+                    advect(cells, &warm, &path, false, m0, dy, DECAY_KM, &mut meridional);
                 }
             }
         }
@@ -193,13 +218,15 @@ impl Climate {
     }
 }
 
-/// Carries moisture along `path`, cells listed in the wind's direction `step_km` apart: 1
-/// over the ocean (recharged over a fetch of [`FETCH_KM`]), decaying over land by `decay_km` and
+/// Carries moisture along `path`, cells listed in the wind's direction `step_km` apart:
+/// `source[i]` over the ocean (recharged over a fetch of [`FETCH_KM`]), decaying over land by `decay_km` and
 /// by uplift. A `ring` (a row) starts where the air leaves the ocean and goes round twice to
 /// settle; an open path starts with moisture `m0`. Writes, per land cell, the moisture and the
 /// share rained out by uplift there.
+#[allow(clippy::too_many_arguments)]
 fn advect(
     cells: &[(bool, f64)],
+    source: &[f64],
     path: &[usize],
     ring: bool,
     m0: f64,
@@ -221,7 +248,7 @@ fn advect(
         let i = path[(start + k) % n];
         let (land, alt) = cells[i];
         if !land {
-            m += (1.0 - m) * recharge;
+            m += (source[i] - m) * recharge;
             air = 0.0;
             continue;
         }

@@ -133,7 +133,7 @@ pub fn levels(flood: &Flood, dep: &Depressions, terminal: &[Option<f64>]) -> Lev
     let mut wet_area = vec![0.0f64; dep.spill.len()];
     for v in 0..n {
         let c = dep.comp[v];
-        if c != NONE && terminal[c as usize].is_some_and(|l| route[v] < l) {
+        if c != NONE && terminal[c as usize].is_some_and(|l| route[v] <= l) {
             wet_area[c as usize] += area[v];
         }
     }
@@ -153,7 +153,7 @@ pub fn levels(flood: &Flood, dep: &Depressions, terminal: &[Option<f64>]) -> Lev
             let c = dep.comp[v];
             match c {
                 NONE => NONE,
-                c if terminal[c as usize].is_some_and(|l| route[v] >= l) => NONE,
+                c if terminal[c as usize].is_some_and(|l| route[v] > l) => NONE,
                 c => lake_of_comp[c as usize],
             }
         })

@@ -87,7 +87,7 @@ fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], a
     for v in 0..area.len() {
         let (lat, lon) = lat_lon(mesh.pos(v as u32));
         let p = climate.precip_at(lat, lon);
-        let e0 = potential_evaporation_mm(lat, height[v]);
+        let e0 = potential_evaporation_mm(lat, height[v], p);
         if is_land(v) {
             runoff[v] = runoff_mm(p, e0) * 1e-3 * area[v];
         }
@@ -262,9 +262,9 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
             river_slope: p.river_slope(),
         };
         let flood = super::relief::Flood { order: &order, downstream: &downstream, edge_len: &lens, ..terrain };
-        let dep = super::relief::depressions(&flood);
+        let mut dep = super::relief::depressions(&flood);
         let (runoff, net_loss) = water_balance(mesh, &inland, &coast, &height, &area);
-        let terminal = super::basins::terminal_levels(&flood, &dep, &runoff, &net_loss);
+        let terminal = super::basins::terminal_levels(&flood, &mut dep, &runoff, &net_loss);
         let (outlets, new_order) =
             super::basins::drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);
         for o in outlets {
