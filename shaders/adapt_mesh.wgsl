@@ -55,6 +55,7 @@ const KIND_RIVER: u32 = 3u;
 
 const FLAG_RIVER: u32 = 8u;
 const FLAG_REFINED: u32 = 64u;
+const FLAG_LAKE: u32 = 128u;
 
 // Per-vertex marks of the collapse stage: an apex a collapse restored (looked at next), and a
 // collapse candidate.

@@ -299,7 +299,9 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         up = vb;
         down = va;
     }
-    var v = new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED, 0u);
+    // Between two vertices under a lake, the river runs under it too (`wet_vertex`).
+    let lake = vertex_flags(va) & vertex_flags(vb) & FLAG_LAKE;
+    var v = new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED | lake, 0u);
     v.bits |= tangent_code(tangent_along(triple(v.pos), triple(down.pos) - triple(up.pos)));
     return v;
 }
@@ -360,6 +362,12 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         }
         any_lo = max(any_lo, below);
         hi = min(hi, v.ground + le * p.ground_slope);
+    }
+    // A lake's bed (`continent_vertex`): between two vertices under a lake, under it too.
+    if (vertex_flags(around[0]) & FLAG_LAKE) != 0u && (vertex_flags(around[2]) & FLAG_LAKE) != 0u {
+        let surface = max(around[0].water, around[2].water);
+        let g = min((around[0].ground + around[2].ground) * p.half, surface);
+        return Made(new_vertex(at, seed, g, surface, FLAG_LAKE | FLAG_REFINED, 0u), kinds);
     }
     let edge_len = distance3(pos(s.a), pos(s.b));
 

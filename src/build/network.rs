@@ -17,7 +17,8 @@ pub struct RiverGraph {
     pub order: Vec<u32>,
     /// Coast vertices where a river meets the sea.
     pub mouths: Vec<u32>,
-    /// Pits of closed basins, where rivers end inland ([`VertexFlags::SINK`]).
+    /// Pits of closed basins, where rivers end inland: lake vertices ([`VertexFlags::LAKE`])
+    /// with no lower river neighbour.
     pub sinks: Vec<u32>,
     /// River vertices with no lower river neighbour, plus river edges that are not a downstream
     /// link (water level equal at both ends, or a second outflow).
@@ -54,10 +55,6 @@ impl RiverGraph {
                 mouths.push(v);
                 continue;
             }
-            if vert.flags.contains(VertexFlags::SINK) {
-                sinks.push(v);
-                continue;
-            }
             let mut best: Option<(f64, u32)> = None;
             for (w, e) in adj.around(v) {
                 if mesh.edges[e as usize].kind != EdgeKind::River {
@@ -73,6 +70,7 @@ impl RiverGraph {
                     downstream[v as usize] = w;
                     used += 1;
                 }
+                None if vert.flags.contains(VertexFlags::LAKE) => sinks.push(v),
                 None => violations += 1,
             }
         }
@@ -237,10 +235,12 @@ impl RiverGraph {
                 best
             };
         }
-        let ends = VertexFlags(VertexFlags::MOUTH.0 | VertexFlags::SINK.0);
+        let ends = |v: u32| {
+            mesh.vertices[v as usize].flags.contains(VertexFlags::MOUTH) || self.sinks.binary_search(&v).is_ok()
+        };
         let is_start = |v: u32| {
             let f = mesh.vertices[v as usize].flags;
-            f.contains(VertexFlags::RIVER) && !f.intersects(ends) && self.tributaries(v) != 1
+            f.contains(VertexFlags::RIVER) && !ends(v) && self.tributaries(v) != 1
         };
         let mut start_id = vec![usize::MAX; n];
         let starts: Vec<u32> = self.order.iter().copied().filter(|&v| is_start(v)).collect();
@@ -261,7 +261,7 @@ impl RiverGraph {
                     }
                     length += mesh.pos(v).distance(mesh.pos(d));
                     path.push(d);
-                    if self.tributaries(d) >= 2 || mesh.vertices[d as usize].flags.intersects(ends) {
+                    if self.tributaries(d) >= 2 || ends(d) {
                         break;
                     }
                     v = d;

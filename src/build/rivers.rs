@@ -320,7 +320,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
             let vert = &mut mesh.vertices[si];
             vert.water = sea + l.water[si];
             vert.ground = sea + elevation[si].unwrap_or(0.0).min(l.water[si] - p.riverbed_edge_height_m);
-            vert.flags.insert(VertexFlags::SINK | VertexFlags::RIVER);
+            vert.flags.insert(VertexFlags::LAKE | VertexFlags::RIVER);
             gradient[si] = (p.max_river_altitude_m - vert.ground) / l_up[si].max(p.min_river_length_m);
         }
     }
@@ -349,13 +349,18 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         };
         let ground = match &relief_levels {
             // A lake's floor is the map's; a river's bed lies its depth below the water.
-            Some(l) if l.lake[vi] != NONE => sea + elevation[vi].unwrap_or(0.0).min(l.water[vi] - depth),
+            Some(l) if l.lake[vi] != NONE => {
+                sea + elevation[vi].unwrap_or(0.0).min(l.water[vi] - depth.max(p.riverbed_edge_height_m))
+            }
             _ => water - depth,
         };
         let vert = &mut mesh.vertices[vi];
         vert.water = water;
         vert.ground = ground;
         vert.flags.insert(VertexFlags::RIVER);
+        if relief_levels.as_ref().is_some_and(|l| l.lake[vi] != NONE) {
+            vert.flags.insert(VertexFlags::LAKE);
+        }
         let ek = &mut mesh.edges[down_edge[vi] as usize];
         ek.kind = EdgeKind::River;
     }
@@ -550,9 +555,13 @@ fn base_split_vertex(
             let lake = lake_of.get(site.a as usize).copied().filter(|&l| l != NONE);
             let surface = va.water.max(vb.water);
             match mapped {
-                Some(h) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h < surface => {
-                    (pos, h.min(surface - p.riverbed_edge_height_m), surface, 0.0, VertexFlags::MOUNTAIN)
-                }
+                Some(h) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h < surface => (
+                    pos,
+                    h.min(surface - p.riverbed_edge_height_m),
+                    surface,
+                    0.0,
+                    VertexFlags(VertexFlags::MOUNTAIN.0 | VertexFlags::LAKE.0),
+                ),
                 _ => {
                     let g = wanted.min(hi).max(lo);
                     (pos, g, g, 0.0, VertexFlags::MOUNTAIN)
@@ -567,7 +576,11 @@ fn base_split_vertex(
     gradient.push(grad);
     if !lake_of.is_empty() {
         let (la, lb) = (lake_of[site.a as usize], lake_of[site.b as usize]);
-        lake_of.push(if la == lb && water > ground { la } else { NONE });
+        let lake = if la == lb && water > ground { la } else { NONE };
+        lake_of.push(lake);
+        if lake != NONE {
+            v.flags.insert(VertexFlags::LAKE);
+        }
     }
     (v, kinds)
 }

@@ -94,7 +94,9 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
         }
         _ => {
             let w = (va.water + vb.water) * 0.5;
-            (mid_ground.min(w), w, VertexFlags::RIVER)
+            // Between two vertices under a lake, the river runs under it too.
+            let lake = VertexFlags(va.flags.0 & vb.flags.0 & VertexFlags::LAKE.0);
+            (mid_ground.min(w), w, VertexFlags(VertexFlags::RIVER.0 | lake.0))
         }
     };
     let mut v = Vertex::new(lift(pos, d.radius, ground), seed);
@@ -123,6 +125,18 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
     let lens = [0, 2, 1, 3].map(|i| dir.distance(corners[i]) * r);
     // Eq. 1 (`lift`) for the direction at hand.
     let lifted = |g: f64| dir * (r + g);
+    // A lake's bed: between two vertices under a lake the new vertex lies under it too, on the
+    // mean of their beds (eq. 11's banks hold for rivers, not inside a lake).
+    let (a, b) = (around[0], around[2]);
+    if a.flags.contains(VertexFlags::LAKE) && b.flags.contains(VertexFlags::LAKE) {
+        let surface = a.water.max(b.water);
+        let g = ((a.ground + b.ground) * 0.5).min(surface);
+        let mut v = Vertex::new(lifted(g), seed);
+        v.ground = g;
+        v.water = surface;
+        v.flags = VertexFlags(VertexFlags::LAKE.0 | VertexFlags::REFINED.0);
+        return (v, kinds);
+    }
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above

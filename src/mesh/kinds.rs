@@ -49,9 +49,10 @@ impl VertexFlags {
     pub const MOUNTAIN: VertexFlags = VertexFlags(32);
     /// Made by a split, so a collapse may remove it; base-mesh vertices never collapse.
     pub const REFINED: VertexFlags = VertexFlags(64);
-    /// The lowest vertex of a basin with no outlet to the sea, where its rivers end (in a
-    /// terminal lake or a dry pan).
-    pub const SINK: VertexFlags = VertexFlags(128);
+    /// On a lake's bed, under its water: splits between two such vertices stay under it (no
+    /// island the map does not have). A river vertex so flagged with no lower river neighbour
+    /// is the pit of a closed basin, where its rivers end (in a terminal lake or a dry pan).
+    pub const LAKE: VertexFlags = VertexFlags(128);
 
     pub const fn empty() -> VertexFlags {
         VertexFlags(0)

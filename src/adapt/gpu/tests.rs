@@ -354,6 +354,11 @@ fn shader_constants_match_the_host() {
     let scale = crate::mesh::Tangent::SCALE;
     assert_eq!(split_src.matches(&format!("f64(-{scale:.1}), f64({scale:.1})")).count(), 2);
     assert_eq!(crate::mesh::LOD_RADIUS, 1.0);
+    let mesh_src = include_str!("../../../shaders/adapt_mesh.wgsl");
+    use crate::mesh::VertexFlags as F;
+    for (name, flag) in [("RIVER", F::RIVER), ("REFINED", F::REFINED), ("LAKE", F::LAKE)] {
+        assert!(mesh_src.contains(&format!("const FLAG_{name}: u32 = {}u;", flag.0)), "FLAG_{name}");
+    }
 }
 
 /// A planet whose parameters all differ from the defaults and from each other (the slopes
@@ -394,6 +399,38 @@ fn a_planet_with_other_parameters_adapts_alike() {
         assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
         assert_eq!((a.faces, a.splits, a.collapses), (b.faces, b.splits, b.collapses), "camera {i}");
         assert!(a.splits > 1000, "camera {i}: {a:?}");
+        assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
+    }
+}
+
+#[test]
+fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
+    let Ok(bytes) = std::fs::read("maps/earth_etopo5_1024x512.tif") else { return };
+    let limits = crate::maps::MapLimits::default();
+    let map = crate::maps::Map::decode(&bytes, crate::maps::MapKind::Elevation, None, None, &limits).unwrap();
+    let params = Params::default();
+    let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(Arc::new(map)) };
+    let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
+    let r = params.radius_m;
+    let mut cpu = Adapter::new(planet.mesh.clone(), params.clone());
+    let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
+    // Over the Caspian (a terminal lake) and the Great Lakes.
+    for (i, (lat, lon, height)) in [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4)].into_iter().enumerate() {
+        let dir = crate::build::continents::direction(lat, lon);
+        let north = (DVec3::Z - dir * dir.z).normalize();
+        let target = (dir + north * 0.01).normalize() * r;
+        let cam = Camera::new(dir * (r + height), target, None, 60.0, 640, 360, 3.0, 15.0, r).unwrap();
+        let (a, b) = (cpu.adapt(&cam, Some(450_000)), dev.adapt(&cam, Some(450_000)));
+        assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
+        assert_eq!((a.faces, a.splits, a.collapses), (b.faces, b.splits, b.collapses), "camera {i}");
+        let lake = crate::mesh::VertexFlags::LAKE;
+        let refined_lake = cpu
+            .mesh()
+            .vertices
+            .iter()
+            .filter(|v| v.flags.contains(lake) && v.flags.contains(crate::mesh::VertexFlags::REFINED))
+            .count();
+        assert!(refined_lake > 100, "camera {i}: {refined_lake} refined lake vertices");
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }
 }
