@@ -286,3 +286,24 @@ fn a_lake_stays_water_as_the_view_refines_it() {
         assert!(beds.clone().count() > 1000 && beds.clone().all(|v| v.submerged()));
     }
 }
+
+#[test]
+fn the_preview_shows_lakes_as_water() {
+    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
+    let png = crate::export::preview_png(&planet.mesh, &planet.rivers, &Params::default(), 1024, 512);
+    let img = image::load_from_memory(&png).unwrap().to_rgb8();
+    let caspian = planet.lakes.iter().max_by(|a, b| a.area_m2.total_cmp(&b.area_m2)).unwrap();
+    // Pixels at the Caspian's lake vertices (away from its shore) are water-coloured.
+    let (mut blue, mut all) = (0, 0);
+    for (v, &l) in planet.lake_of.iter().enumerate() {
+        if l != caspian.id || !planet.mesh.vertices[v].flags.contains(crate::mesh::VertexFlags::LAKE) {
+            continue;
+        }
+        let (lat, lon) = lat_lon(planet.mesh.pos(v as u32));
+        let (x, y) = (((lon + 180.0) / 360.0 * 1024.0) as u32 % 1024, (((90.0 - lat) / 180.0 * 512.0) as u32).min(511));
+        let [r, g, b] = img.get_pixel(x, y).0;
+        all += 1;
+        blue += usize::from(b > r && b > g);
+    }
+    assert!(all > 50 && blue * 10 >= all * 9, "{blue} of {all} blue");
+}

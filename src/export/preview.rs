@@ -1,11 +1,14 @@
 //! The colour preview: an equirectangular RGB PNG for people.
 //!
-//! Sea pixels take `water_colour` of the interpolated depth below sea level; land pixels take the
+//! Sea pixels take `water_colour` of the interpolated depth below sea level; lake pixels (where
+//! the corners under a lake, [`VertexFlags::LAKE`], weigh at least half) that of the lake's
+//! interpolated depth; land pixels take the
 //! climate colour of their latitude and interpolated altitude, hillshaded with light from the
 //! north-west, 45° high, on the interpolated surface normal (its slope exaggerated
 //! `RELIEF_EXAGGERATION` times, since planetary relief is gentle at preview scale). Rivers are
 //! drawn on top as polylines of their reaches in longitude/latitude, lowest Strahler order first:
-//! 1 px wide for orders 1-2, 2 px for 3-4, 3 px from 5, from light to dark blue with the order.
+//! 1 px wide for orders 1-2, 2 px for 3-4, 3 px from 5, from light to dark blue with the order;
+//! not across lakes (a segment between two lake vertices).
 //! Segments crossing the antimeridian are drawn the short way, wrapping around the image.
 
 use super::climate::{climate_colour, water_colour};
@@ -13,7 +16,7 @@ use super::raster::SphereRaster;
 use super::surface_normals;
 use crate::build::continents::lat_lon;
 use crate::build::RiverGraph;
-use crate::mesh::{FaceKind, Mesh};
+use crate::mesh::{FaceKind, Mesh, VertexFlags};
 use crate::params::Params;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -111,13 +114,20 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
             let wts = raster.weights[i];
             let mut alt = 0.0;
             let mut normal = DVec3::ZERO;
+            let (mut lake, mut lake_depth) = (0.0, 0.0);
             for (&v, &wt) in mesh.corners(raster.faces[i]).iter().zip(&wts) {
-                let (v, wt) = (v as usize, wt as f64);
-                alt += wt * (mesh.vertices[v].ground - sea);
-                normal += wt * normals[v];
+                let (vert, wt) = (&mesh.vertices[v as usize], wt as f64);
+                alt += wt * (vert.ground - sea);
+                normal += wt * normals[v as usize];
+                if vert.flags.contains(VertexFlags::LAKE) {
+                    lake += wt;
+                    lake_depth += wt * (vert.water - vert.ground);
+                }
             }
             let rgb = if kind == FaceKind::Sea {
                 water_colour(-alt)
+            } else if lake >= 0.5 {
+                water_colour(lake_depth / lake)
             } else {
                 let lon = SphereRaster::lon_of(c as u32, width);
                 let d = raster.direction(c as u32, r as u32);
@@ -129,17 +139,22 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
     });
     let mut reaches = graph.reaches(mesh);
     reaches.sort_by_key(|r| (r.strahler, r.id));
+    let in_lake = |v: u32| mesh.vertices[v as usize].flags.contains(VertexFlags::LAKE);
     for r in &reaches {
-        let pts: Vec<(f64, f64)> = r
-            .vertices
-            .iter()
-            .map(|&v| {
-                let (lat, lon) = lat_lon(mesh.pos(v));
-                (lon, lat)
-            })
-            .collect();
         let (colour, px) = river_style(r.strahler);
-        draw_line(&mut img, width, height, &pts, colour, px);
+        // Runs of the reach outside lakes.
+        for run in r.vertices.windows(2).collect::<Vec<_>>().split(|w| in_lake(w[0]) && in_lake(w[1])) {
+            let mut pts: Vec<(f64, f64)> = Vec::with_capacity(run.len() + 1);
+            for (k, w) in run.iter().enumerate() {
+                for &v in if k == 0 { &w[..] } else { &w[1..] } {
+                    let (lat, lon) = lat_lon(mesh.pos(v));
+                    pts.push((lon, lat));
+                }
+            }
+            if !pts.is_empty() {
+                draw_line(&mut img, width, height, &pts, colour, px);
+            }
+        }
     }
     encode_png(&img, width, height, image::ExtendedColorType::Rgb8)
 }

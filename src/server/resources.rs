@@ -166,8 +166,8 @@ fn render(
 /// a change to the software changes their bytes (revision 2: eq. 6 per side of the frustum, the
 /// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
 /// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
-/// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water), so that caches holding the old bytes under a strong, immutable `ETag` see
-/// a new one.
+/// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water), so
+/// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
 const ANSWERS_REVISION: &str = "5";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
