@@ -68,6 +68,10 @@ pub struct Params {
     pub riverbed_edge_height_m: f64,
     /// s_g: maximum ground slope.
     pub max_ground_slope_m_per_km: f64,
+    /// Planets without an elevation map: how much mountain belts lift the land (their ridges
+    /// by this much, small rivers nearly as much, great rivers less, as they cut gorges); 0
+    /// for none (the paper).
+    pub mountain_belt_uplift_m: f64,
     /// The 2D climate lookup texture.
     pub climate: Climate,
 }
@@ -106,6 +110,7 @@ impl Params {
             min_river_slope_m_per_km: 0.01,
             min_slope_near_river_m_per_km: 0.1,
             riverbed_edge_height_m: 5.0,
+            mountain_belt_uplift_m: 3_000.0,
             ..Params::paper()
         }
     }
@@ -129,6 +134,7 @@ impl Params {
             min_slope_near_river_m_per_km: 1.0,
             riverbed_edge_height_m: 10.0,
             max_ground_slope_m_per_km: 1000.0,
+            mountain_belt_uplift_m: 0.0,
             climate: Climate::Temperate,
         }
     }
@@ -194,6 +200,14 @@ impl Params {
             200_000.0,
             false,
             "m (at least max_river_altitude_m)",
+        )?;
+        range(
+            "mountain_belt_uplift_m",
+            self.mountain_belt_uplift_m,
+            0.0,
+            self.max_mountain_altitude_m - self.max_river_altitude_m,
+            false,
+            "m (at most max_mountain_altitude_m - max_river_altitude_m)",
         )?;
         range("min_river_length_m", self.min_river_length_m, 0.0, 1.0e8, true, "m")?;
         range("min_river_slope_m_per_km", self.min_river_slope_m_per_km, 0.0, 1_000.0, true, "m/km")?;

@@ -1,6 +1,7 @@
 //! Planet generation (paper §4): base shape, continents and initial river networks.
 
 pub mod basins;
+pub mod belts;
 pub mod climate;
 pub mod continents;
 pub mod fidelity;

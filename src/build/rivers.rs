@@ -20,6 +20,9 @@ use crate::mesh::raster::SphereRaster;
 /// Radius of the window (in pixels of the sampled map) whose lowest ground routes a vertex.
 const ROUTE_RADIUS_PX: u32 = 1;
 
+/// Upstream length over which a river's lift in a mountain belt halves about 1.4 times (m).
+const GORGE_LENGTH_M: f64 = 600_000.0;
+
 /// Sea-floor slope away from the coast for planets without a relief map (m per m).
 const SHELF_SLOPE: f64 = 0.01;
 
@@ -370,6 +373,22 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         mesh.vertices[u as usize].flags.insert(VertexFlags::RIVER);
     }
 
+    // --- Mountain belts (planets without a relief map): rivers lifted downstream first ---
+    if relief.is_none() && p.mountain_belt_uplift_m > 0.0 {
+        let mut lift = vec![0.0f64; n];
+        for &v in &order {
+            let (vi, u) = (v as usize, downstream[v as usize] as usize);
+            // A great river cuts a gorge through the range instead of rising over it; the lift
+            // never falls upstream, so every river still falls to the sea.
+            let gorge = (-l_up[vi] / GORGE_LENGTH_M).exp();
+            let want = p.mountain_belt_uplift_m * super::belts::belt(seed, mesh.pos(v)) * gorge;
+            lift[vi] = want.max(lift[u]);
+            let vert = &mut mesh.vertices[vi];
+            vert.water += lift[vi];
+            vert.ground += lift[vi];
+        }
+    }
+
     // --- Sea floor: deeper away from the coast, or the relief map's bathymetry ---
     sea_floor(mesh, &adj, params, &elevation);
 
@@ -377,7 +396,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
     if !report.lake_of.is_empty() {
         report.lake_of.resize(n, NONE);
     }
-    report.mountains = insert_mountains(mesh, params, relief, &mut gradient, &mut report.lake_of);
+    report.mountains = insert_mountains(mesh, params, relief, seed, &mut gradient, &mut report.lake_of);
     report
 }
 
@@ -449,6 +468,7 @@ fn insert_mountains(
     mesh: &mut Mesh,
     p: &Params,
     relief: Option<&Map>,
+    seed: u64,
     gradient: &mut Vec<f64>,
     lake_of: &mut Vec<u32>,
 ) -> usize {
@@ -467,7 +487,7 @@ fn insert_mountains(
         .collect();
     let mut mountains = 0;
     let mut make = |m: &Mesh, site: &SplitSite| {
-        let (v, kinds) = base_split_vertex(m, site, p, relief, gradient, lake_of);
+        let (v, kinds) = base_split_vertex(m, site, p, relief, seed, gradient, lake_of);
         if v.flags.contains(VertexFlags::MOUNTAIN) {
             mountains += 1;
         }
@@ -490,6 +510,7 @@ fn base_split_vertex(
     site: &SplitSite,
     p: &Params,
     relief: Option<&Map>,
+    planet_seed: u64,
     gradient: &mut Vec<f64>,
     lake_of: &mut Vec<u32>,
 ) -> (Vertex, [EdgeKind; 4]) {
@@ -548,7 +569,11 @@ fn base_split_vertex(
             let mapped = relief.and_then(|map| map.sample(lat, lon)).map(|h| sea + h as f64);
             let wanted = match mapped {
                 Some(h) => h,
-                None => vr.ground + gradient[r as usize] * horizontal(vr) * xi,
+                // A mountain belt lifts the ridges between rivers by its full height.
+                None => {
+                    let belt = p.mountain_belt_uplift_m * super::belts::belt(planet_seed, pos);
+                    vr.ground + gradient[r as usize] * horizontal(vr) * xi + belt
+                }
             };
             // Between two shores of one lake, ground the map has below the lake's surface is
             // its bed, under water (no island the map does not have).
