@@ -74,9 +74,15 @@ pub struct Stats {
 pub enum BuildError {
     #[error(transparent)]
     Params(#[from] ParamError),
-    #[error("the map leaves the planet no sea: every face is land")]
+    #[error(
+        "the map leaves the planet no sea: every face is land (an elevation map's sea is ground \
+         below 0 m joined to the ocean, or the outside of a regional map's bounds)"
+    )]
     NoSea,
-    #[error("the map leaves the planet no land: every face is sea")]
+    #[error(
+        "the map leaves the planet no land: every face is sea (an elevation map's land is ground \
+         above 0 m, or below it and cut off from the ocean)"
+    )]
     NoLand,
 }
 

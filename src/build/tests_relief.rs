@@ -349,3 +349,64 @@ fn the_earth_preset_gives_earth_like_land_with_mountain_belts() {
         assert_eq!(planet.stats.monotone_violations, 0);
     }
 }
+
+/// A global elevation map of `w x h` pixels from a function of latitude and longitude.
+fn synthetic(w: u32, h: u32, f: impl Fn(f64, f64) -> f32) -> Map {
+    let values = (0..w * h)
+        .map(|i| {
+            let (lat, lon) =
+                (90.0 - ((i / w) as f64 + 0.5) * 180.0 / h as f64, -180.0 + ((i % w) as f64 + 0.5) * 360.0 / w as f64);
+            f(lat, lon)
+        })
+        .collect();
+    Map::from_values(MapKind::Elevation, w, h, GeoBounds::GLOBE, values).unwrap()
+}
+
+fn build_map(map: Map) -> Result<Planet, BuildError> {
+    let spec = PlanetSpec { seed: 5, params: Params::default(), map: Some(Arc::new(map)) };
+    build_planet(&spec, &mut |_, _| {})
+}
+
+#[test]
+fn a_continent_that_drains_nowhere_builds_with_a_closed_basin() {
+    // Ocean west of -60° and east of 60°; between them a continent that is one bowl: a rim at
+    // 800 m round a floor 200 m below sea level, 25° across, wet (near the equator) or dry
+    // (in the subtropics).
+    for centre in [0.0, 25.0] {
+        let map = synthetic(512, 256, |lat, lon| {
+            if lon.abs() > 60.0 || (lat - centre).abs() > 40.0 {
+                return -3000.0;
+            }
+            let d = ((lat - centre).powi(2) + lon.powi(2)).sqrt();
+            if d < 25.0 {
+                (-200.0 + 1000.0 * (d / 25.0).powi(2)) as f32
+            } else {
+                800.0
+            }
+        });
+        let planet = build_map(map).expect("builds");
+        let s = &planet.stats;
+        assert!(s.drained_fraction >= 0.99 && s.monotone_violations == 0, "{s:?}");
+        // The bowl below 0 m is land or lake, never sea.
+        let v = planet.mesh.vertices.iter().position(|v| distance_km(lat_lon(v.p()), (centre, 0.0)) < 150.0).unwrap();
+        assert!(planet.mesh.vertices[v].flags.is_inland(), "bowl at {centre}° is sea");
+        if centre == 25.0 {
+            assert!(s.endorheic_basins >= Some(1), "the dry bowl closes: {s:?}");
+        }
+    }
+}
+
+#[test]
+fn maps_with_no_sea_or_no_land_fail_saying_why() {
+    let under = synthetic(128, 64, |_, _| -50.0);
+    let e = build_map(under).expect_err("all below sea level fails").to_string();
+    assert!(e.contains("no land") && e.contains("below"), "{e}");
+    // Land all round, above sea level: no sea to drain to.
+    let e = build_map(synthetic(128, 64, |lat, _| 500.0 + lat as f32)).expect_err("no sea fails").to_string();
+    assert!(e.contains("no sea") && e.contains("ocean"), "{e}");
+    // Land all round but for one basin below 0 m: on a global map the largest body below sea
+    // level is the ocean, so the basin is the planet's one sea and the land drains to it.
+    let bowl = synthetic(256, 128, |lat, lon| if lat.abs() < 15.0 && lon.abs() < 15.0 { -100.0 } else { 500.0 });
+    let planet = build_map(bowl).expect("a planet with one small sea builds");
+    assert!(planet.stats.drained_fraction >= 0.99 && planet.stats.land_fraction > 0.9, "{:?}", planet.stats);
+}
