@@ -26,7 +26,9 @@
 //! 7. **Runoff** from land: `P - AET` with actual evaporation by Budyko's curve in Fu's form
 //!    (`AET / P = 1 + E0/P - (1 + (E0/P)^w)^(1/w)`, `w = 2.6`).
 
-use crate::geo::direction;
+use crate::geo::{direction, lat_lon};
+use crate::mesh::raster::SphereRaster;
+use crate::mesh::Mesh;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -45,11 +47,13 @@ const ZONAL_MM: [(f64, f64); 12] = [
     (80.0, 180.0),
     (90.0, 100.0),
 ];
-const TROPICAL_DECAY_KM: f64 = 6000.0;
+const TROPICAL_DECAY_KM: f64 = 12000.0;
 const DECAY_KM: f64 = 3000.0;
 const BOREAL_DECAY_KM: f64 = 5000.0;
-/// Over open water the air regains moisture over this fetch.
+/// Over open water the air regains moisture over this fetch; the poleward flow over warm
+/// seas, faster.
 const FETCH_KM: f64 = 2000.0;
+const MONSOON_FETCH_KM: f64 = 400.0;
 /// How fast the air sinks back after a crest (m per km).
 const SETTLE_M_PER_KM: f64 = 1.0;
 /// Latitudes of the poleward flow, and the share of its moisture that counts.
@@ -171,7 +175,7 @@ impl Climate {
             if wind(lat) < 0 {
                 path.reverse();
             }
-            advect(cells, &full, &path, true, 1.0, dx, decay_km(lat), &mut zonal);
+            advect(cells, &full, &path, true, 1.0, dx, (decay_km(lat), FETCH_KM), &mut zonal);
         }
         let mut meridional = vec![(0.0f64, 0.0f64); w * h];
         let dy = step.to_radians() * EARTH_RADIUS_KM;
@@ -186,7 +190,7 @@ impl Climate {
                 }
                 if let Some(&first) = path.first() {
                     let m0 = if cells[first].0 { zonal[first].0 } else { 1.0 };
-                    advect(cells, &warm, &path, false, m0, dy, DECAY_KM, &mut meridional);
+                    advect(cells, &warm, &path, false, m0, dy, (DECAY_KM, MONSOON_FETCH_KM), &mut meridional);
                 }
             }
         }
@@ -207,6 +211,32 @@ impl Climate {
             };
         }
         Climate { width: w, height: h, precip_mm: precip }
+    }
+
+    /// The climate of a mesh whose vertex `v` is land when `land(v)`, at `altitude(v)` metres
+    /// above sea level (interpolated on the grid over the mesh's faces).
+    pub fn of_mesh(
+        mesh: &Mesh,
+        land: impl Fn(usize) -> bool + Sync,
+        altitude: impl Fn(usize) -> f64 + Sync,
+    ) -> Climate {
+        let raster = SphereRaster::new(mesh, WIDTH as u32, HEIGHT as u32);
+        let is_land = raster.interpolate(mesh, |v| if land(v) { 1.0 } else { 0.0 });
+        let alt = raster.interpolate(mesh, |v| if land(v) { altitude(v).max(0.0) } else { 0.0 });
+        let cells: Vec<(bool, f64)> = is_land.iter().zip(&alt).map(|(&l, &a)| (l > 0.5, f64::from(a))).collect();
+        Climate::new(&cells)
+    }
+
+    /// Precipitation and potential evaporation (mm/yr) at every vertex of `mesh`, at
+    /// `altitude(v)` metres above sea level.
+    pub fn at_vertices(&self, mesh: &Mesh, altitude: impl Fn(usize) -> f64) -> Vec<(f64, f64)> {
+        (0..mesh.vertices.len())
+            .map(|v| {
+                let (lat, lon) = lat_lon(mesh.pos(v as u32));
+                let p = self.precip_at(lat, lon);
+                (p, potential_evaporation_mm(lat, altitude(v), p))
+            })
+            .collect()
     }
 
     /// Precipitation (mm/yr) in the cell holding a latitude and longitude.
@@ -231,12 +261,12 @@ fn advect(
     ring: bool,
     m0: f64,
     step_km: f64,
-    decay_km: f64,
+    (decay_km, fetch_km): (f64, f64),
     out: &mut [(f64, f64)],
 ) {
     let n = path.len();
     let decay = (-step_km / decay_km).exp();
-    let recharge = 1.0 - (-step_km / FETCH_KM).exp();
+    let recharge = 1.0 - (-step_km / fetch_km).exp();
     let ocean = path.iter().position(|&i| !cells[i].0);
     let (start, laps, mut m) = match (ring, ocean) {
         (true, Some(o)) => (o, 2, 1.0),

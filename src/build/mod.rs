@@ -12,7 +12,7 @@ pub mod rivers;
 pub mod shape;
 
 use crate::maps::{Map, MapKind};
-use crate::mesh::{FaceKind, Mesh};
+use crate::mesh::{FaceKind, Mesh, VertexFlags};
 use crate::params::{ParamError, Params, MAX_BASE_FACES};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -38,6 +38,9 @@ pub struct Planet {
     /// lakes; empty without a map).
     pub lakes: Vec<lakes::Lake>,
     pub lake_of: Vec<u32>,
+    /// Runoff per base-mesh vertex, mm per year over its land (0 at sea), from the planet's
+    /// climate ([`climate`]): what the rivers' discharge sums.
+    pub runoff_mm: Vec<f32>,
 }
 
 /// `stats.json`: the numbers that describe a built planet.
@@ -161,6 +164,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     let graph = RiverGraph::from_mesh(&mesh);
+    let runoff_mm = runoff(&mesh, p.sea_level_m);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));
     let stats = Stats {
         faces: mesh.faces.len(),
@@ -182,7 +186,16 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     let lake_of = std::mem::take(&mut report.lake_of);
     let lakes = lakes::lakes(&mesh, &lake_of, &report.lake_levels);
     progress("done", 1.0);
-    Ok(Planet { mesh, rivers: graph, stats, lakes, lake_of })
+    Ok(Planet { mesh, rivers: graph, stats, lakes, lake_of, runoff_mm })
+}
+
+/// Runoff (mm/yr) of each land vertex in the climate of the built mesh.
+fn runoff(mesh: &Mesh, sea: f64) -> Vec<f32> {
+    let land = |v: usize| mesh.vertices[v].flags.is_inland() || mesh.vertices[v].flags.contains(VertexFlags::COAST);
+    let altitude = |v: usize| mesh.vertices[v].ground - sea;
+    let c = climate::Climate::of_mesh(mesh, land, altitude);
+    let at = c.at_vertices(mesh, altitude);
+    at.iter().enumerate().map(|(v, &(p, e0))| if land(v) { climate::runoff_mm(p, e0) as f32 } else { 0.0 }).collect()
 }
 
 /// Whether face `f` may overlap the map bounds (its vertices' bounding box, widened by the

@@ -15,7 +15,6 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use super::continents::lat_lon;
-use crate::mesh::raster::SphereRaster;
 
 /// Radius of the window (in pixels of the sampled map) whose lowest ground routes a vertex.
 const ROUTE_RADIUS_PX: u32 = 1;
@@ -78,19 +77,12 @@ fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at
 /// less precipitation (m³/yr), in the planet's climate ([`super::climate`]); `height` is its
 /// altitude (m relative to sea level).
 fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], area: &[f64]) -> (Vec<f64>, Vec<f64>) {
-    use super::climate::{potential_evaporation_mm, runoff_mm, Climate, HEIGHT, WIDTH};
-    let raster = SphereRaster::new(mesh, WIDTH as u32, HEIGHT as u32);
+    use super::climate::{runoff_mm, Climate};
     let is_land = |v: usize| inland[v] || coast[v];
-    let land = raster.interpolate(mesh, |v| if is_land(v) { 1.0 } else { 0.0 });
-    let alt = raster.interpolate(mesh, |v| if is_land(v) { height[v].max(0.0) } else { 0.0 });
-    let cells: Vec<(bool, f64)> = land.iter().zip(&alt).map(|(&l, &a)| (l > 0.5, f64::from(a))).collect();
-    let climate = Climate::new(&cells);
+    let climate = Climate::of_mesh(mesh, is_land, |v| height[v]);
     let mut runoff = vec![0.0f64; area.len()];
     let mut loss = vec![0.0f64; area.len()];
-    for v in 0..area.len() {
-        let (lat, lon) = lat_lon(mesh.pos(v as u32));
-        let p = climate.precip_at(lat, lon);
-        let e0 = potential_evaporation_mm(lat, height[v], p);
+    for (v, (p, e0)) in climate.at_vertices(mesh, |v| height[v]).into_iter().enumerate() {
         if is_land(v) {
             runoff[v] = runoff_mm(p, e0) * 1e-3 * area[v];
         }

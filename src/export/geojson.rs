@@ -5,8 +5,10 @@
 //! Positions are rounded to 1e-6° (about 0.1 m) and altitudes to 0.01 m. Each reach carries
 //! `kind: "river"`, `id` (also as the Feature's `id`), `downstream_id` (the reach it flows into,
 //! `null` at a mouth, a closed basin's pit or where the network ends), `strahler`,
-//! `upstream_area_km2`, `length_km` and `lake_id` (the first lake it flows into or through,
-//! else `null`).
+//! `upstream_area_km2`, `length_km`, its hydraulics where it ends (`discharge_m3s`, the mean
+//! discharge from the planet's climate; `width_m` and `depth_m` of its channel by
+//! [`Reach::width_m`]; `perennial`, false for a wadi), `slope` (the water's fall over its length)
+//! and `lake_id` (the first lake it flows into or through, else `null`).
 //!
 //! A lake is a Polygon (a MultiPolygon if its water stands in several pieces) with
 //! `kind: "lake"`, `lake_id`, `water_altitude_m`, `area_km2` and `endorheic` (no outlet to the
@@ -79,6 +81,9 @@ fn coordinates(part: &[[f64; 3]]) -> Value {
 }
 
 fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64, lake_of: &[u32]) -> Value {
+    let (first, last) = (reach.vertices[0], *reach.vertices.last().unwrap_or(&reach.vertices[0]));
+    let fall = mesh.vertices[first as usize].water - mesh.vertices[last as usize].water;
+    let slope = if reach.length_m > 0.0 { fall / reach.length_m } else { 0.0 };
     let lake_id = reach.vertices.iter().map(|&v| lake_of.get(v as usize).copied().unwrap_or(NONE)).find(|&l| l != NONE);
     let points: Vec<[f64; 3]> = reach
         .vertices
@@ -106,6 +111,11 @@ fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64, lake_of: &[u32]) -> Value
             "strahler": reach.strahler,
             "upstream_area_km2": round_to(reach.upstream_area_m2 / 1e6, 3),
             "length_km": round_to(reach.length_m / 1e3, 3),
+            "discharge_m3s": round_to(reach.discharge_m3s, 3),
+            "width_m": round_to(reach.width_m(), 2),
+            "depth_m": round_to(reach.depth_m(), 2),
+            "slope": round_to(slope, 8),
+            "perennial": reach.perennial(),
             "lake_id": lake_id,
         },
     })
@@ -182,8 +192,12 @@ fn lake_feature(lake: &Lake, rings: &[Vec<glam::DVec3>]) -> Option<Value> {
 /// then one per lake.
 pub fn rivers_geojson(planet: &Planet, params: &Params) -> String {
     let mesh = &planet.mesh;
-    let mut features: Vec<Value> =
-        planet.rivers.reaches(mesh).iter().map(|r| feature(mesh, r, params.sea_level_m, &planet.lake_of)).collect();
+    let mut features: Vec<Value> = planet
+        .rivers
+        .reaches(mesh, &planet.runoff_mm)
+        .iter()
+        .map(|r| feature(mesh, r, params.sea_level_m, &planet.lake_of))
+        .collect();
     let shores = outlines(mesh, &planet.lake_of, planet.lakes.len());
     features.extend(planet.lakes.iter().filter_map(|l| lake_feature(l, &shores[l.id as usize])));
     json!({"type": "FeatureCollection", "features": features}).to_string()
@@ -217,7 +231,7 @@ mod tests {
         let doc: Value = serde_json::from_str(&text).expect("valid JSON");
         assert_eq!(doc["type"], "FeatureCollection");
         let features = doc["features"].as_array().unwrap();
-        let reaches = planet.rivers.reaches(&planet.mesh);
+        let reaches = planet.rivers.reaches(&planet.mesh, &planet.runoff_mm);
         assert_eq!(features.len(), reaches.len());
         assert!(!features.is_empty(), "the test planet has rivers");
         let ids: BTreeSet<u64> = features.iter().map(|f| f["properties"]["id"].as_u64().unwrap()).collect();
@@ -238,6 +252,10 @@ mod tests {
             assert!(props["strahler"].as_u64().unwrap() >= 1);
             assert!(props["length_km"].as_f64().unwrap() >= 0.0);
             assert!(props["upstream_area_km2"].as_f64().unwrap() >= 0.0);
+            let q = props["discharge_m3s"].as_f64().unwrap();
+            assert!(q >= 0.0 && props["slope"].as_f64().unwrap() >= 0.0 && props["perennial"].is_boolean());
+            assert_eq!(props["width_m"].as_f64().unwrap() > 0.0, q > 0.0, "{props}");
+            assert!(props["depth_m"].as_f64().unwrap() < props["width_m"].as_f64().unwrap().max(0.01));
             let parts = lines(&f["geometry"]);
             let flat: Vec<[f64; 3]> = parts.iter().flatten().copied().collect();
             for p in &parts {
