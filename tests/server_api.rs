@@ -118,9 +118,19 @@ async fn map_upload_builds_and_serves_every_file() {
     assert!(metrics.contains("riverworld_http_request_duration_seconds_bucket"));
     assert!(metrics.contains(r#"riverworld_cache_hits_total{cache="response"}"#));
 
-    // Delete: 204, then gone everywhere.
+    // Methods beyond the standard ones count as `other`: clients cannot grow the metrics.
+    let odd = reqwest::Method::from_bytes(b"FROBNICATE-0123456789").unwrap();
+    for _ in 0..3 {
+        s.client.request(odd.clone(), s.url("/v1/planets")).send().await.unwrap();
+    }
+    let metrics = s.get("/metrics").await.text().await.unwrap();
+    assert!(!metrics.contains("FROBNICATE") && metrics.contains(r#"method="other""#), "{metrics}");
+
+    // Delete: 204, then gone everywhere, its directory too.
+    assert!(s.dir.join("planets").join(&id).is_dir());
     let res = s.client.delete(s.url(&format!("/v1/planets/{id}"))).send().await.unwrap();
     assert_eq!(res.status().as_u16(), 204);
+    assert!(!s.dir.join("planets").join(&id).exists(), "the planet's directory stays after DELETE");
     expect_error(s.get(&format!("/v1/planets/{id}")).await, 404, "not_found").await;
     expect_error(s.get(&format!("/v1/planets/{id}/rivers.geojson")).await, 404, "not_found").await;
     assert!(!s.dir.join(format!("planets/{id}/request.json")).exists());

@@ -187,3 +187,23 @@ async fn two_servers_on_one_store_serve_each_others_planets_identically() {
     let url = format!("/v1/planets/{late}/rivers.geojson");
     assert!(get_built(&b.client, &b.url(&url)).await == get_built(&a.client, &a.url(&url)).await);
 }
+
+#[tokio::test]
+async fn each_request_logs_one_bounded_line_at_info() {
+    let data = scratch("logs");
+    let p = spawn_server(&data, &[], &[]);
+    let marker = "x".repeat(1000);
+    let res = p.get(&format!("/v1/planets/needle-{marker}")).await;
+    assert_eq!(res.status().as_u16(), 404);
+    // The line is written when the answer is: poll briefly.
+    let mut lines = Vec::new();
+    for _ in 0..50 {
+        lines = p.log().lines().filter(|l| l.contains("needle-")).map(str::to_string).collect();
+        if !lines.is_empty() {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+    }
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(lines[0].len() < 600 && lines[0].contains("404") && lines[0].contains("INFO"), "{}", lines[0]);
+}

@@ -112,11 +112,19 @@ impl Metrics {
     }
 }
 
-/// Middleware that counts every request under its route pattern (`unmatched` for none).
+/// A request method as a label from a fixed set: the standard methods, `other` for the rest, so
+/// that clients cannot grow the metrics (or the logs) with methods of their own.
+pub fn method_label(m: &axum::http::Method) -> &'static str {
+    const KNOWN: [&str; 9] = ["GET", "HEAD", "POST", "PUT", "DELETE", "OPTIONS", "PATCH", "TRACE", "CONNECT"];
+    KNOWN.iter().find(|&&k| k == m.as_str()).copied().unwrap_or("other")
+}
+
+/// Middleware that counts every request under its route pattern (`unmatched` for none) and
+/// method label ([`method_label`]).
 pub async fn track(State(metrics): State<Arc<super::state::AppState>>, req: Request<Body>, next: Next) -> Response {
     let route = req.extensions().get::<MatchedPath>().map(|p| p.as_str().to_string());
     let route = route.unwrap_or_else(|| "unmatched".to_string());
-    let method = req.method().to_string();
+    let method = method_label(req.method()).to_string();
     let start = Instant::now();
     let res = next.run(req).await;
     metrics.metrics.observe(&route, &method, res.status().as_u16(), start.elapsed().as_secs_f64());

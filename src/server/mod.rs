@@ -41,7 +41,7 @@ use tower_http::compression::CompressionLayer;
 use tower_http::cors::{AllowOrigin, CorsLayer};
 use tower_http::limit::RequestBodyLimitLayer;
 use tower_http::timeout::TimeoutLayer;
-use tower_http::trace::TraceLayer;
+use tower_http::trace::{DefaultOnResponse, TraceLayer};
 
 /// The API description served at `/openapi.yaml`.
 pub const OPENAPI: &str = include_str!("../../openapi.yaml");
@@ -293,8 +293,27 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .layer(middleware::from_fn(error::json_errors))
         .layer(compression)
         .layer(cors)
-        .layer(TraceLayer::new_for_http())
+        .layer(
+            TraceLayer::new_for_http()
+                .make_span_with(request_span)
+                .on_request(())
+                .on_response(DefaultOnResponse::new().level(tracing::Level::INFO)),
+        )
         .with_state(state))
+}
+
+/// Longest request target written to the logs, in characters.
+const LOGGED_URI_CHARS: usize = 200;
+
+/// The span of one request's log line: its method label and target, cut to
+/// [`LOGGED_URI_CHARS`] characters.
+fn request_span(req: &axum::http::Request<axum::body::Body>) -> tracing::Span {
+    let uri = req.uri().to_string();
+    let uri = match uri.char_indices().nth(LOGGED_URI_CHARS) {
+        Some((cut, _)) => format!("{}... ({} bytes)", &uri[..cut], uri.len()),
+        None => uri,
+    };
+    tracing::info_span!("request", method = metrics::method_label(req.method()), uri = %uri)
 }
 
 async fn not_found() -> ApiError {

@@ -65,8 +65,10 @@ impl Store {
             },
         };
         std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create data directory {}: {e}", dir.display()))?;
+        // Deleting a planet's last file removes its directory too.
         let fs = LocalFileSystem::new_with_prefix(&dir)
-            .map_err(|e| format!("cannot open data directory {}: {e}", dir.display()))?;
+            .map_err(|e| format!("cannot open data directory {}: {e}", dir.display()))?
+            .with_automatic_cleanup(true);
         Ok(Store { inner: Arc::new(fs) })
     }
 
