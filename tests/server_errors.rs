@@ -163,6 +163,22 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
     let err = expect_error(post_typed(&s, png_rgb(64, 32), "text/plain", &[]).await, 422, "wrong_color_type").await;
     assert_eq!(err["field"], "map");
 
+    // A map with no sea or no land is refused at upload, naming why, and nothing is stored.
+    let gray = |w: u32, h: u32, v: u8| {
+        let mut out = std::io::Cursor::new(Vec::new());
+        image::GrayImage::from_pixel(w, h, image::Luma([v])).write_to(&mut out, image::ImageFormat::Png).unwrap();
+        out.into_inner()
+    };
+    let err = expect_error(s.post_map(gray(1, 1, 255), &[]).await, 422, "no_sea").await;
+    assert_eq!(err["field"], "map");
+    let err = expect_error(s.post_map(gray(64, 32, 0), &[]).await, 422, "no_land").await;
+    assert_eq!(err["field"], "map");
+    let listed = s.get("/v1/planets").await.json::<serde_json::Value>().await.unwrap();
+    assert_eq!(listed["planets"].as_array().unwrap().len(), 1, "only the first planet is stored: {listed}");
+    // A regional map that is all land is an island: accepted.
+    let res = s.post_map(gray(32, 32, 255), &[("map_bounds", "10,10,12,12")]).await;
+    assert_eq!(res.status().as_u16(), 202);
+
     // Bit depth and colour model that the map kind does not take.
     let err = expect_error(s.post_map(png16(64, 32), &[("map_kind", "continents")]).await, 422, "wrong_bit_depth");
     assert_eq!(err.await["field"], "map");
@@ -263,6 +279,6 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
     let res = s.post_map(small_map(), &[("params", r#"{"base_faces": 500}"#)]).await;
     assert_eq!(res.status().as_u16(), 202);
     let stored = std::fs::read_dir(dir.join("planets")).unwrap().count();
-    assert_eq!(stored, 3, "the JSON planet, the GeoTIFF planet and the good upload");
+    assert_eq!(stored, 4, "the JSON planet, the regional island, the GeoTIFF planet and the good upload");
     s.stop().await;
 }

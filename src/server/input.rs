@@ -140,8 +140,27 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlane
     let is_tiff = map.starts_with(b"II*\0") || map.starts_with(b"MM\0*");
     let kind = kind.unwrap_or(if is_tiff || range.is_some() { MapKind::Elevation } else { MapKind::Continents });
     let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
+    check_land_and_sea(&decoded)?;
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
     Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: Some(meta) }, map: Some(map) })
+}
+
+/// Refuses at upload a map that leaves the planet no land, or (covering the whole globe) no sea,
+/// rather than storing a planet whose build must fail.
+fn check_land_and_sea(map: &crate::maps::Map) -> Result<(), ApiError> {
+    let land = map.land_fraction();
+    let what = if map.kind == MapKind::Elevation { "ground above 0 m" } else { "white pixels" };
+    if land <= 0.0 {
+        return Err(ApiError::unprocessable("no_land", "map", format!("the map has no land ({what})")));
+    }
+    if land >= 1.0 && map.bounds.is_global() {
+        return Err(ApiError::unprocessable(
+            "no_sea",
+            "map",
+            format!("the map is land everywhere: a planet needs sea to drain to (a global map's sea is anything but {what})"),
+        ));
+    }
+    Ok(())
 }
 
 /// Decodes a map off the async runtime.
