@@ -205,6 +205,9 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
     expect_error(s.post_map(small_map()[..40].to_vec(), &[]).await, 422, "corrupt_image").await;
     let tif = s.get(&format!("/v1/planets/{id}/elevation.tif?width=64")).await.bytes().await.unwrap().to_vec();
     assert_eq!(s.post_map(tif.clone(), &[("params", r#"{"base_faces": 200}"#)]).await.status().as_u16(), 202);
+    // A GeoTIFF is an elevation map: as continents it is refused by its kind, not as no image.
+    let err = expect_error(s.post_map(tif.clone(), &[("map_kind", "continents")]).await, 422, "wrong_map_kind").await;
+    assert_eq!(err["field"], "map_kind");
     for cut in [8, 100, tif.len() / 2, tif.len() - 10] {
         let err = expect_error(s.post_map(tif[..cut].to_vec(), &[]).await, 422, "corrupt_image").await;
         assert_eq!(err["field"], "map", "cut at {cut}");

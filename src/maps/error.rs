@@ -62,6 +62,10 @@ pub enum MapError {
     /// `map_kind` is neither "continents" nor "elevation".
     #[error("map kind must be \"continents\" or \"elevation\" (got {0:?})")]
     UnknownKind(String),
+
+    /// `map_kind` names a kind the file's format cannot hold (a GeoTIFF as continents).
+    #[error("map kind {kind} does not fit the file: {hint}")]
+    KindMismatch { kind: &'static str, hint: &'static str },
 }
 
 impl MapError {
@@ -81,6 +85,7 @@ impl MapError {
             MapError::InvalidBounds(_) => "invalid_bounds",
             MapError::InvalidGeoreference(_) => "invalid_georeference",
             MapError::UnknownKind(_) => "invalid_map_kind",
+            MapError::KindMismatch { .. } => "wrong_map_kind",
         }
     }
 
@@ -89,7 +94,7 @@ impl MapError {
         match self {
             MapError::MissingMapRange | MapError::InvalidMapRange(_) => "map_range",
             MapError::InvalidBounds(_) => "map_bounds",
-            MapError::UnknownKind(_) => "map_kind",
+            MapError::UnknownKind(_) | MapError::KindMismatch { .. } => "map_kind",
             _ => "map",
         }
     }

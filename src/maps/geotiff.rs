@@ -36,7 +36,11 @@ fn call<T>(f: impl FnOnce() -> Result<T, TiffError>) -> Result<T, MapError> {
 /// from `fallback` (the caller's `bounds` argument or GLOBE, already validated).
 pub(super) fn decode(bytes: &[u8], kind: MapKind, fallback: GeoBounds, limits: &MapLimits) -> Result<Map, MapError> {
     if kind == MapKind::Continents {
-        return Err(MapError::Unsupported("continent bitmaps must be 8-bit grayscale PNG (got a TIFF)".to_string()));
+        return Err(MapError::KindMismatch {
+            kind: "continents",
+            hint: "a GeoTIFF holds elevations in metres: send it as map_kind elevation (the default for a \
+                   TIFF); continent bitmaps are 8-bit grayscale PNGs",
+        });
     }
     let mut dec = call(|| Decoder::new(Cursor::new(bytes)))?;
     let (width, height) = call(|| dec.dimensions())?;

@@ -168,7 +168,7 @@ fn bad_tiffs() {
     assert_code(&err(&u8s, MapKind::Elevation, None), "wrong_bit_depth", "map", "uint8");
     let ok = encode_tiff::<colortype::GrayI16>(2, 2, &[1i16, 2, 3, 4], None, &[], None);
     let e = err(&ok, MapKind::Continents, None);
-    assert_code(&e, "unsupported_format", "map", "continent bitmaps must be 8-bit");
+    assert_code(&e, "wrong_map_kind", "map_kind", "a GeoTIFF holds elevations");
     assert_code(&err(&ok[..ok.len() - 4], MapKind::Elevation, None), "corrupt_image", "map", "TIFF");
     assert_code(&err(&ok[..6], MapKind::Elevation, None), "corrupt_image", "map", "TIFF");
     let off = GeoBounds { west: 100.0, south: 0.0, east: 300.0, north: 10.0 };
