@@ -14,6 +14,12 @@ fn from_map(path: &str) -> Option<Planet> {
     Some(build_planet(&spec, &mut |_, _| {}).unwrap())
 }
 
+/// The planet of the shipped Earth DEM, built once for every test that reads it.
+fn earth() -> Option<&'static Planet> {
+    static EARTH: std::sync::OnceLock<Option<Planet>> = std::sync::OnceLock::new();
+    EARTH.get_or_init(|| from_map("maps/earth_etopo5_1024x512.tif")).as_ref()
+}
+
 fn check_fidelity(planet: &Planet, min_r: f64) {
     let f = planet.stats.map_fidelity.as_ref().expect("an elevation map reports its fidelity");
     assert!(f.r >= min_r, "{f:?}");
@@ -56,9 +62,9 @@ fn check_basins(planet: &Planet) {
 
 #[test]
 fn the_shipped_earth_dem_keeps_its_heights_and_basins() {
-    let planet = from_map("maps/earth_etopo5_1024x512.tif").expect("the shipped DEM");
-    check_fidelity(&planet, 0.97);
-    check_basins(&planet);
+    let planet = earth().expect("the shipped DEM");
+    check_fidelity(planet, 0.97);
+    check_basins(planet);
     // The Caspian (its surface 28 m below sea level) and the Qattara Depression are no sea.
     let raster =
         SphereRaster::new_in(&planet.mesh, GeoBounds { west: 49.0, south: 41.0, east: 51.0, north: 43.0 }, 1, 1);
@@ -128,8 +134,8 @@ fn closed_basins(planet: &Planet) -> (Vec<&'static str>, Vec<&'static str>) {
 
 #[test]
 fn dry_basins_close_and_wet_ones_overflow() {
-    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
-    let (closed, open) = closed_basins(&planet);
+    let Some(planet) = earth() else { return };
+    let (closed, open) = closed_basins(planet);
     // Measured: 7 of 9 closed (not the Great Salt Lake, Balkhash), 7 of 12 open (not Superior,
     // Ontario, Baikal, Sichuan, Assam): see docs/realism.md.
     assert!(closed.len() >= 7 && closed.contains(&"Caspian") && closed.contains(&"Aral"), "closed: {closed:?}");
@@ -211,9 +217,9 @@ fn precipitation_is_within_a_factor_of_two_at_most_stations() {
 
 #[test]
 fn lakes_are_exported_as_polygons_at_their_level() {
-    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
+    let Some(planet) = earth() else { return };
     let doc: serde_json::Value =
-        serde_json::from_str(&crate::export::rivers_geojson(&planet, &Params::default())).unwrap();
+        serde_json::from_str(&crate::export::rivers_geojson(planet, &Params::default())).unwrap();
     let features = doc["features"].as_array().unwrap();
     let lakes: Vec<&serde_json::Value> = features.iter().filter(|f| f["properties"]["kind"] == "lake").collect();
     assert_eq!(planet.stats.lakes, Some(planet.lakes.len()));
@@ -263,7 +269,7 @@ fn lakes_are_exported_as_polygons_at_their_level() {
 #[test]
 fn a_lake_stays_water_as_the_view_refines_it() {
     use crate::adapt::{Adapter, Camera};
-    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
+    let Some(planet) = earth() else { return };
     let r = Params::default().radius_m;
     // Above the middle Caspian, 300 km and 30 km up. Within 120 km of the point (all of it
     // water in reality) every vertex of the lake's bed stays under it, and what is dry is the
@@ -289,7 +295,7 @@ fn a_lake_stays_water_as_the_view_refines_it() {
 
 #[test]
 fn the_preview_shows_lakes_as_water() {
-    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
+    let Some(planet) = earth() else { return };
     let png = crate::export::preview_png(&planet.mesh, &planet.rivers, &Params::default(), 1024, 512);
     let img = image::load_from_memory(&png).unwrap().to_rgb8();
     let caspian = planet.lakes.iter().max_by(|a, b| a.area_m2.total_cmp(&b.area_m2)).unwrap();
@@ -452,8 +458,8 @@ fn mouth_discharges(planet: &Planet) -> Vec<(&'static str, f64, f64)> {
 
 #[test]
 fn great_rivers_carry_their_discharge_within_a_factor_of_three() {
-    let Some(planet) = from_map("maps/earth_etopo5_1024x512.tif") else { return };
-    let table = mouth_discharges(&planet);
+    let Some(planet) = earth() else { return };
+    let table = mouth_discharges(planet);
     let within = table.iter().filter(|t| (1.0 / 3.0..=3.0).contains(&t.2)).count();
     // Measured 6 of 12 (docs/realism.md): the Congo, Mackenzie, Columbia, Indus, Niger and
     // Zambezi; wet basins get too little rain (Ganges, Ob, Mekong, St. Lawrence, whose Great

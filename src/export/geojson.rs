@@ -148,7 +148,7 @@ fn lake_feature(lake: &Lake, rings: &[Vec<glam::DVec3>]) -> Option<Value> {
                 .map(|&p| {
                     let (lat, mut lon) = lat_lon(p);
                     if let Some(q) = prev {
-                        lon = q + (lon - q + 540.0).rem_euclid(360.0) - 180.0;
+                        lon = q + crate::mesh::raster::wrap180(lon - q);
                     }
                     prev = Some(lon);
                     [lon, lat]
