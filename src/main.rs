@@ -141,6 +141,26 @@ enum Command {
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=9))]
         levels: u8,
     },
+    /// Write a DEM of a region as a Cloud-Optimized GeoTIFF (float32, EPSG:4326): band 1 the
+    /// ground and band 2 the water surface (NaN where dry), metres relative to sea level, at
+    /// the cell centres of the bbox grid, from the planet refined to the grid's resolution with
+    /// the split rule of views and tiles. Prints the grid and timing as JSON.
+    Dem {
+        #[command(flatten)]
+        planet: PlanetArgs,
+        /// Region: W,S,E,N in degrees (inside -180..180, -90..90).
+        #[arg(long, allow_hyphen_values = true)]
+        bbox: String,
+        /// Cells across (1..=8192).
+        #[arg(long)]
+        width: u32,
+        /// Cells down (1..=8192) [default: square cells in degrees].
+        #[arg(long)]
+        height: Option<u32>,
+        /// Output file.
+        #[arg(long, default_value = "dem.tif")]
+        out: PathBuf,
+    },
     /// Time planet builds, view adaption and snapshots, and print Markdown tables.
     Bench {
         /// Directory with the Earth maps.
@@ -217,6 +237,10 @@ struct ServeArgs {
     #[arg(long, default_value_t = riverworld::server::DEFAULT_MAX_RENDER_PIXELS,
           value_parser = clap::value_parser!(u64).range(1..=(8192 * 8192)))]
     max_render_pixels: u64,
+    /// Most cells (width x height) a dem.tif may ask for.
+    #[arg(long, default_value_t = riverworld::export::dem::DEFAULT_MAX_DEM_PIXELS,
+          value_parser = clap::value_parser!(u64).range(1..=(8192 * 8192)))]
+    max_dem_pixels: u64,
     /// Where adaption runs for views and snapshots: cpu (rayon), gpu (wgpu compute; refuses to
     /// start without a suitable adapter) or auto (the GPU when the adapter is a real GPU with
     /// f64 in shaders whose meshes are the CPU's bit for bit, checked on a small planet; else
@@ -256,6 +280,7 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         max_raster_width: args.max_raster_width,
         max_map_pixels: args.max_map_mpixels << 20,
         max_render_pixels: args.max_render_pixels,
+        max_dem_pixels: args.max_dem_pixels,
         render_delay: std::time::Duration::ZERO,
         adapt_backend: args.backend,
     };
@@ -451,6 +476,45 @@ fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8) -> Result<(
     Ok(())
 }
 
+/// `riverworld dem`: exit code 2 for bad input, 1 when the file cannot be written.
+fn run_dem(planet: &PlanetArgs, bbox: &str, width: u32, height: Option<u32>, out: &std::path::Path) -> ExitCode {
+    use riverworld::export::dem::{dem_tiff, DemRequest, DEFAULT_MAX_DEM_PIXELS};
+    let fail = |code: u8, e: String| {
+        eprintln!("error: {e}");
+        ExitCode::from(code)
+    };
+    let req = match DemRequest::new(bbox, width, height, DEFAULT_MAX_DEM_PIXELS) {
+        Ok(r) => r,
+        Err(e) => return fail(2, format!("--{e}")),
+    };
+    let spec = match planet.spec() {
+        Ok(s) => s,
+        Err(e) => return fail(2, e.to_string()),
+    };
+    let built = match generate::build(&spec, &mut |_, _| {}) {
+        Ok(b) => b,
+        Err(e) => return fail(2, e.to_string()),
+    };
+    let tiles = match riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()) {
+        Ok(t) => t,
+        Err(e) => return fail(1, e.to_string()),
+    };
+    let t0 = std::time::Instant::now();
+    let dem = tiles.dem(&req);
+    let sampled_ms = t0.elapsed().as_secs_f64() * 1e3;
+    let bytes = dem_tiff(&dem);
+    let total_ms = t0.elapsed().as_secs_f64() * 1e3;
+    if let Err(e) = std::fs::write(out, &bytes) {
+        return fail(1, format!("cannot write {}: {e}", out.display()));
+    }
+    let stats = serde_json::json!({
+        "out": out.display().to_string(), "query": req.to_query(), "width": req.width, "height": req.height,
+        "splits": dem.splits, "bytes": bytes.len(), "sample_ms": sampled_ms.round(), "total_ms": total_ms.round(),
+    });
+    println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
+    ExitCode::SUCCESS
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
@@ -489,6 +553,7 @@ fn main() -> ExitCode {
                 ExitCode::from(2)
             }
         },
+        Command::Dem { planet, bbox, width, height, out } => run_dem(&planet, &bbox, width, height, &out),
         Command::Serve(args) => match run_serve(args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

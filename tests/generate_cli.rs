@@ -370,3 +370,37 @@ fn glb_triangles(glb: &[u8]) -> Vec<Vec<[[u32; 3]; 3]>> {
         })
         .collect()
 }
+
+#[test]
+fn dem_writes_a_region_and_refuses_bad_grids() {
+    let out = scratch("dem");
+    std::fs::create_dir_all(&out).unwrap();
+    let file = out.join("alps.tif");
+    let map = maps("earth_etopo5_1024x512.tif");
+    let args = |bbox: &str, width: &str| {
+        vec![
+            "dem".to_string(),
+            "--map".into(),
+            map.to_str().unwrap().into(),
+            "--faces".into(),
+            "20000".into(),
+            format!("--bbox={bbox}"),
+            "--width".into(),
+            width.into(),
+            "--out".into(),
+            file.to_str().unwrap().into(),
+        ]
+    };
+    let o = run(&args("5,44,11,47", "300").iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!((stats["width"].as_u64(), stats["height"].as_u64()), (Some(300), Some(150)));
+    assert!(std::fs::read(&file).unwrap().starts_with(b"II*\0"));
+    for (bbox, width, what) in
+        [("5,44,11", "300", "bbox"), ("5,44,11,47", "9000", "width"), ("11,44,5,47", "30", "bbox")]
+    {
+        let o = run(&args(bbox, width).iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!(o.status.code(), Some(2), "{bbox} {width}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains(what), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+}

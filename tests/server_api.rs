@@ -101,6 +101,17 @@ async fn map_upload_builds_and_serves_every_file() {
             assert!(bytes.starts_with(b"II*\0") || bytes.starts_with(b"MM\0*"));
         }
     }
+    // A DEM of a region: a two-band COG, cached under its normal query (key order and
+    // percent-encoding do not matter).
+    let res = s.get(&format!("/v1/planets/{id}/dem.tif?bbox=-20,-10,20,10&width=160")).await;
+    assert_eq!(res.status().as_u16(), 200);
+    assert_eq!(res.headers()["content-type"], "image/tiff");
+    let etag = res.headers()["etag"].to_str().unwrap().to_string();
+    let dem = res.bytes().await.unwrap();
+    assert!(dem.starts_with(b"II*\0"));
+    let res = s.get(&format!("/v1/planets/{id}/dem.tif?width=160&height=80&bbox=-20%2C-10%2C20%2C10")).await;
+    assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
+    assert_eq!(res.bytes().await.unwrap(), dem);
     // JSON is compressed when the client accepts it.
     let res = s
         .client

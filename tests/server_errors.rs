@@ -82,6 +82,14 @@ async fn bad_requests_name_their_problem() {
         (format!("/v1/planets/{id}/landmask.png?width=9000"), "invalid_parameter", "width"),
         (format!("/v1/planets/{id}/elevation.tif?height=5"), "unknown_parameter", "height"),
         (format!("/v1/planets/{id}/rivers.geojson?width=5"), "unknown_parameter", "width"),
+        (format!("/v1/planets/{id}/dem.tif?width=5"), "missing_parameter", "bbox"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=5&width=6"), "duplicate_parameter", "width"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=8193"), "invalid_parameter", "width"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=8192&height=8192"), "invalid_parameter", "width"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=5&height=0"), "invalid_parameter", "height"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=170,2,190,4&width=5"), "invalid_bbox", "bbox"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,1,4&width=5"), "invalid_bbox", "bbox"),
+        (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=5&crs=3857"), "unknown_parameter", "crs"),
     ] {
         let err = expect_error(s.get(&path).await, 422, code).await;
         assert_eq!(err["field"], field, "{path}");

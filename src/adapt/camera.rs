@@ -229,7 +229,7 @@ fn size(field: &'static str, s: &str) -> Result<u32, CameraError> {
 }
 
 /// Decodes `%XX` escapes and `+` (as space) in a query value.
-fn percent_decode(s: &str) -> String {
+pub fn percent_decode(s: &str) -> String {
     let bytes = s.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut i = 0;

@@ -7,6 +7,8 @@
 //! not to the base sphere the mesh stores them against.
 
 pub mod climate;
+pub mod cog;
+pub mod dem;
 pub mod geojson;
 pub mod glb;
 pub mod preview;

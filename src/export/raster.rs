@@ -42,27 +42,23 @@ pub const GEO_KEYS_EPSG_4326: [u16; 20] = [
     2054, 0, 1, 9102, // GeogAngularUnitsGeoKey = degree
 ];
 
-/// Single-band float32 GeoTIFF (Deflate) of the ground altitude in metres relative to sea level,
-/// interpolated on the mesh, georeferenced as EPSG:4326 covering -180..180, -90..90.
+/// Single-band float32 Cloud-Optimized GeoTIFF ([`super::cog`]) of the ground altitude in
+/// metres relative to sea level, interpolated on the mesh, georeferenced as EPSG:4326 covering
+/// -180..180, -90..90. The sea gets its floor's (negative) altitude: no pixel is without data.
 pub fn elevation_tiff(mesh: &Mesh, params: &Params, width: u32, height: u32) -> Vec<u8> {
-    use tiff::encoder::{colortype::Gray32Float, compression::Deflate, TiffEncoder};
-    use tiff::tags::Tag;
     let raster = SphereRaster::new(mesh, width, height);
     let sea = params.sea_level_m;
     let data = raster.interpolate(mesh, |v| mesh.vertices[v].ground - sea);
-    let mut cursor = std::io::Cursor::new(Vec::new());
-    let write = |cursor: &mut std::io::Cursor<Vec<u8>>| -> tiff::TiffResult<()> {
-        let mut enc = TiffEncoder::new(cursor)?;
-        let mut image = enc.new_image_with_compression::<Gray32Float, _>(width, height, Deflate::default())?;
-        let scale = [360.0 / width as f64, 180.0 / height as f64, 0.0];
-        image.encoder().write_tag(Tag::ModelPixelScaleTag, &scale[..])?;
-        let tie = [0.0, 0.0, 0.0, -180.0, 90.0, 0.0];
-        image.encoder().write_tag(Tag::ModelTiepointTag, &tie[..])?;
-        image.encoder().write_tag(Tag::GeoKeyDirectoryTag, &GEO_KEYS_EPSG_4326[..])?;
-        image.write_data(&data)
-    };
-    write(&mut cursor).expect("TIFF encodes into memory");
-    cursor.into_inner()
+    super::cog::write_cog(&super::cog::CogRaster {
+        width: width as usize,
+        height: height as usize,
+        bands: vec![&data],
+        names: vec!["ground_m"],
+        west: -180.0,
+        north: 90.0,
+        pixel: [360.0 / width as f64, 180.0 / height as f64],
+        nodata_nan: false,
+    })
 }
 
 #[cfg(test)]

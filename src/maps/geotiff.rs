@@ -73,6 +73,18 @@ pub(super) fn decode(bytes: &[u8], kind: MapKind, fallback: GeoBounds, limits: &
         }
     };
 
+    // Every strip or tile lies inside the file: a cut file is corrupt even where the decoder
+    // would not read the missing bytes (the padding of a COG's last tile, say).
+    for (offsets, counts) in [(Tag::StripOffsets, Tag::StripByteCounts), (Tag::TileOffsets, Tag::TileByteCounts)] {
+        let at = call(|| dec.find_tag_unsigned_vec::<u64>(offsets))?.unwrap_or_default();
+        let len = call(|| dec.find_tag_unsigned_vec::<u64>(counts))?.unwrap_or_default();
+        if at.iter().zip(&len).any(|(&a, &n)| a.saturating_add(n) > bytes.len() as u64) {
+            return Err(MapError::Corrupt {
+                format: "TIFF",
+                detail: "a strip or tile lies past the end of the file".into(),
+            });
+        }
+    }
     let bounds = georeference(&mut dec, width, height)?.unwrap_or(fallback);
     let nodata = read_nodata(&mut dec)?;
     // LZW, the most expansive TIFF codec, turns a 12-bit code into at most 4096 bytes.

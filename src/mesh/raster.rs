@@ -64,7 +64,11 @@ pub(crate) fn wrap180(d: f64) -> f64 {
 
 /// Latitude range `[lo, hi]` and longitude interval (`None` = all longitudes) of a face.
 pub(crate) fn face_bounds(mesh: &Mesh, f: usize, n: &[DVec3; 3]) -> (f64, f64, Option<(f64, f64)>) {
-    let u = mesh.corners(f as u32).map(|v| mesh.pos(v).normalize());
+    triangle_bounds(mesh.corners(f as u32).map(|v| mesh.pos(v).normalize()), n)
+}
+
+/// [`face_bounds`] of the triangle with unit corner directions `u` and edge planes `n`.
+pub(crate) fn triangle_bounds(u: [DVec3; 3], n: &[DVec3; 3]) -> (f64, f64, Option<(f64, f64)>) {
     let mut lo = 90.0f64;
     let mut hi = -90.0f64;
     for p in &u {

@@ -10,6 +10,7 @@
 
 pub mod auth;
 pub mod cache;
+pub mod dem;
 pub mod error;
 pub mod input;
 pub mod jobs;
@@ -87,6 +88,8 @@ pub struct Config {
     pub max_map_pixels: u64,
     /// Most pixels (width x height) a render.png or render.jpg may ask for.
     pub max_render_pixels: u64,
+    /// Most cells (width x height) a dem.tif may ask for.
+    pub max_dem_pixels: u64,
     /// A pause inside each heavy render while it holds its permit; zero in service, lets tests
     /// observe busy permits and request timeouts.
     pub render_delay: Duration,
@@ -114,6 +117,7 @@ impl Default for Config {
             max_raster_width: resources::MAX_RASTER_WIDTH,
             max_map_pixels: crate::maps::MapLimits::default().max_pixels,
             max_render_pixels: DEFAULT_MAX_RENDER_PIXELS,
+            max_dem_pixels: crate::export::dem::DEFAULT_MAX_DEM_PIXELS,
             render_delay: Duration::ZERO,
             adapt_backend: crate::adapt::gpu::Backend::Auto,
         }
@@ -280,6 +284,7 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/landmask.png", get(resources::landmask))
         .route("/v1/planets/{id}/preview.png", get(resources::preview))
         .route("/v1/planets/{id}/elevation.tif", get(resources::elevation))
+        .route("/v1/planets/{id}/dem.tif", get(dem::dem))
         .route("/v1/planets/{id}/render.png", get(snapshot::png))
         .route("/v1/planets/{id}/render.jpg", get(snapshot::jpeg))
         .route("/v1/planets/{id}/tileset.json", get(tiles::tileset))

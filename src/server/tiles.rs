@@ -21,7 +21,7 @@ use std::sync::Arc;
 
 type Answer = Result<Response, ApiError>;
 
-async fn planet_entry(state: &AppState, id: &str) -> Result<Arc<Entry>, ApiError> {
+pub(super) async fn planet_entry(state: &AppState, id: &str) -> Result<Arc<Entry>, ApiError> {
     state.lookup(id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))
 }
 
@@ -79,7 +79,7 @@ pub async fn tile(
 }
 
 /// The planet's tiling, from the cache or made now (blocking).
-fn tiling(state: &AppState, entry: &Entry, planet: Arc<Planet>) -> Arc<PlanetTiles> {
+pub(super) fn tiling(state: &AppState, entry: &Entry, planet: Arc<Planet>) -> Arc<PlanetTiles> {
     let key = format!("{}/tiling", entry.id);
     if let Some(Cached::Tiles(t)) = state.cache.get(&key) {
         return t;

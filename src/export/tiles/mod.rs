@@ -41,7 +41,7 @@ pub use content::{ContentSpec, TileContent};
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
-pub use tree::{BaseTree, NotBisected, Refiner};
+pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::build::Planet;
 use crate::params::Params;
@@ -106,6 +106,15 @@ impl PlanetTiles {
 
     pub fn params(&self) -> &Params {
         &self.params
+    }
+
+    pub fn planet(&self) -> &Arc<Planet> {
+        &self.planet
+    }
+
+    /// The DEM of `req` ([`crate::export::dem`]), refined along this planet's tree.
+    pub fn dem(&self, req: &crate::export::dem::DemRequest) -> crate::export::dem::Dem {
+        crate::export::dem::sample_dem(&self.planet.mesh, &self.tree, &self.params, req)
     }
 
     /// The deepest level: [`MAX_LEVEL`], or less where edges would get shorter than

@@ -12,7 +12,7 @@
 use crate::mesh::altitude::split_vertex;
 use crate::mesh::{Mesh, SplitSite, VertexFlags};
 use crate::params::Params;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// The eight roots: the octahedron's faces as `octahedron()` makes them (vertices 0..4 on the
 /// equator, 4 the north pole, 5 the south pole), newest vertex first.
@@ -50,7 +50,7 @@ impl BaseTree {
         for v in mesh.vertices.iter_mut().skip(6) {
             v.flags.insert(VertexFlags::REFINED); // let every vertex but the octahedron's collapse
         }
-        let mut midpoints = HashMap::with_capacity(mesh.vertices.len());
+        let mut midpoints = HashMap::with_capacity_and_hasher(mesh.vertices.len(), Default::default());
         let mut alive: Vec<u32> = (6..mesh.vertices.len() as u32).collect();
         loop {
             let sites: Vec<_> = alive.iter().filter_map(|&v| mesh.collapse_site(v)).collect();
@@ -75,6 +75,11 @@ impl BaseTree {
     /// Bytes the maps hold (estimate: key, value and hash-table overhead per entry).
     pub fn bytes(&self) -> usize {
         (self.midpoints.capacity() + self.edges.capacity()) * 24
+    }
+
+    /// Whether the base mesh has split edge `(a, b)`.
+    pub fn splits_edge(&self, a: u32, b: u32) -> bool {
+        self.midpoints.contains_key(&pair(a, b))
     }
 
     /// How many splits the base mesh holds.
@@ -102,7 +107,7 @@ pub struct Refiner<'a> {
 
 impl<'a> Refiner<'a> {
     pub fn new(base: &'a Mesh, tree: &'a BaseTree, params: &'a Params) -> Refiner<'a> {
-        Refiner { base, tree, params, refined: None, midpoints: HashMap::new(), edges: HashMap::new() }
+        Refiner { base, tree, params, refined: None, midpoints: HashMap::default(), edges: HashMap::default() }
     }
 
     /// The mesh the node vertices index: the base mesh plus the splits made so far.

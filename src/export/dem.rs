@@ -1,0 +1,354 @@
+//! A DEM of any region at any resolution, as a WCS `GetCoverage` would give it: `riverworld dem`
+//! and `GET /v1/planets/{id}/dem.tif`.
+//!
+//! **Grid.** `width x height` cells over a bounding box `W,S,E,N` (degrees, EPSG:4326), sampled
+//! at cell centres ([`GeoBounds::lat_of`], [`GeoBounds::lon_of`]); `height` defaults to the
+//! value that keeps cells square in degrees.
+//!
+//! **Surface.** The planet is refined along its bisection tree (`tiles/tree.rs`) with the same
+//! reproducible split as views and tiles, below every tree node that meets the bbox until the
+//! node's refinement edge is no longer than a cell (its smaller side, at most four times finer
+//! than the larger near the poles) or the planet's minimum edge length. So a DEM shows the
+//! surface a view at that detail shows, and two DEMs agree wherever their detail does. The bbox
+//! is cut into blocks of [`BLOCK`] x [`BLOCK`] cells refined in parallel, each by its own
+//! refiner, which bounds memory; every cell takes the value linearly interpolated on the
+//! triangle of the refined surface under its centre.
+//!
+//! **Bands** (float32, metres relative to sea level): 1 `ground_m`, the ground (the sea floor
+//! under the sea: the raster has no hole there); 2 `water_m`, the water surface where water
+//! stands (sea, lakes, rivers wide enough for the grid's triangles) and NaN, the file's no-data
+//! value, where the ground is dry.
+
+use super::cog::{write_cog, CogRaster};
+use super::tiles::{BaseTree, Refiner, ROOTS};
+use crate::geo::{direction, lat_lon};
+use crate::maps::GeoBounds;
+use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
+use crate::mesh::Mesh;
+use crate::params::Params;
+use glam::DVec3;
+use rayon::prelude::*;
+
+/// Most cells along either side of a DEM.
+pub const MAX_DEM_SIDE: u32 = 8192;
+/// Default most cells (width x height) of one DEM.
+pub const DEFAULT_MAX_DEM_PIXELS: u64 = 4096 * 4096;
+/// Longest refinement edge of the surface a DEM samples, in cells: triangles whose legs are
+/// about a cell.
+pub const LEAF_EDGE_CELLS: f64 = 2.0 * std::f64::consts::SQRT_2;
+/// Side of the square blocks of cells refined and sampled together.
+pub const BLOCK: u32 = 512;
+
+/// A validated request: where and how many cells.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DemRequest {
+    pub bounds: GeoBounds,
+    pub width: u32,
+    pub height: u32,
+}
+
+/// Why a request is refused: the field at fault and what is wrong.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{field}: {message}")]
+pub struct DemError {
+    pub field: &'static str,
+    pub message: String,
+}
+
+fn refuse(field: &'static str, message: String) -> DemError {
+    DemError { field, message }
+}
+
+impl DemRequest {
+    /// Checks a request: `bbox` as `W,S,E,N` inside -180..180 / -90..90 and not empty, sides
+    /// from 1 to [`MAX_DEM_SIDE`], at most `max_pixels` cells.
+    pub fn new(bbox: &str, width: u32, height: Option<u32>, max_pixels: u64) -> Result<DemRequest, DemError> {
+        let bounds = GeoBounds::parse(bbox).map_err(|e| refuse("bbox", e.to_string()))?;
+        let side = |field: &'static str, v: u32| {
+            if (1..=MAX_DEM_SIDE).contains(&v) {
+                Ok(v)
+            } else {
+                Err(refuse(field, format!("{v} is outside 1..={MAX_DEM_SIDE}")))
+            }
+        };
+        let width = side("width", width)?;
+        let height = match height {
+            Some(h) => side("height", h)?,
+            None => {
+                let h = (f64::from(width) * (bounds.north - bounds.south) / (bounds.east - bounds.west)).round();
+                if h > f64::from(MAX_DEM_SIDE) {
+                    return Err(refuse(
+                        "height",
+                        format!("square cells need {h} rows, over {MAX_DEM_SIDE}: give a smaller width or a height"),
+                    ));
+                }
+                (h as u32).max(1)
+            }
+        };
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > max_pixels {
+            let field = if pixels / u64::from(height) > 0 && height > width { "height" } else { "width" };
+            return Err(refuse(field, format!("{width}x{height} is {pixels} cells; at most {max_pixels} are served")));
+        }
+        Ok(DemRequest { bounds, width, height })
+    }
+
+    /// Cell size in degrees (longitude, latitude).
+    pub fn pixel(&self) -> [f64; 2] {
+        let b = &self.bounds;
+        [(b.east - b.west) / f64::from(self.width), (b.north - b.south) / f64::from(self.height)]
+    }
+
+    /// Normal form, for cache keys.
+    pub fn to_query(&self) -> String {
+        let b = &self.bounds;
+        format!("bbox={},{},{},{}&width={}&height={}", b.west, b.south, b.east, b.north, self.width, self.height)
+    }
+}
+
+/// The sampled DEM: both bands row-major from the north-west corner.
+pub struct Dem {
+    pub request: DemRequest,
+    pub ground: Vec<f32>,
+    pub water: Vec<f32>,
+    /// Splits made below the base mesh (all blocks together).
+    pub splits: usize,
+}
+
+/// Samples the DEM of `req` from the planet with base mesh `base` and its tree.
+pub fn sample_dem(base: &Mesh, tree: &BaseTree, params: &Params, req: &DemRequest) -> Dem {
+    let (w, h) = (req.width, req.height);
+    let blocks: Vec<(u32, u32)> =
+        (0..h.div_ceil(BLOCK)).flat_map(|by| (0..w.div_ceil(BLOCK)).map(move |bx| (bx, by))).collect();
+    let done: Vec<(Block, usize)> =
+        blocks.par_iter().map(|&(bx, by)| sample_block(base, tree, params, req, bx * BLOCK, by * BLOCK)).collect();
+    let mut ground = vec![0f32; (w * h) as usize];
+    let mut water = vec![0f32; (w * h) as usize];
+    let mut splits = 0;
+    for (b, s) in done {
+        splits += s;
+        for r in 0..b.rows {
+            let at = ((b.row0 + r) * w + b.col0) as usize;
+            let from = (r * b.cols) as usize;
+            ground[at..at + b.cols as usize].copy_from_slice(&b.ground[from..from + b.cols as usize]);
+            water[at..at + b.cols as usize].copy_from_slice(&b.water[from..from + b.cols as usize]);
+        }
+    }
+    Dem { request: *req, ground, water, splits }
+}
+
+/// The DEM as a two-band Cloud-Optimized GeoTIFF.
+pub fn dem_tiff(dem: &Dem) -> Vec<u8> {
+    let r = &dem.request;
+    write_cog(&CogRaster {
+        width: r.width as usize,
+        height: r.height as usize,
+        bands: vec![&dem.ground, &dem.water],
+        names: vec!["ground_m", "water_m"],
+        west: r.bounds.west,
+        north: r.bounds.north,
+        pixel: r.pixel(),
+        nodata_nan: true,
+    })
+}
+
+/// One block's cells.
+struct Block {
+    col0: u32,
+    row0: u32,
+    cols: u32,
+    rows: u32,
+    ground: Vec<f32>,
+    water: Vec<f32>,
+}
+
+/// Refines below the tree nodes that meet the block's cells and samples them.
+fn sample_block(
+    base: &Mesh,
+    tree: &BaseTree,
+    params: &Params,
+    req: &DemRequest,
+    col0: u32,
+    row0: u32,
+) -> (Block, usize) {
+    let (cols, rows) = (BLOCK.min(req.width - col0), BLOCK.min(req.height - row0));
+    let b = &req.bounds;
+    let [dx, dy] = req.pixel();
+    let rect = GeoBounds {
+        west: b.west + f64::from(col0) * dx,
+        east: b.west + f64::from(col0 + cols) * dx,
+        north: b.north - f64::from(row0) * dy,
+        south: b.north - f64::from(row0 + rows) * dy,
+    };
+    let r = params.radius_m;
+    let region = Region::new(rect);
+    let mut refiner = Refiner::new(base, tree, params);
+    let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
+    while let Some(node) = stack.pop() {
+        let u = node.map(|v| refiner.mesh().pos(v).normalize());
+        if !region.may_meet(&u) {
+            continue;
+        }
+        // A leaf: at least the base mesh's detail, and edges no longer than a cell where the
+        // node's cells are narrowest (a function of the node and the cell size alone, so that
+        // overlapping requests on one grid refine alike, whatever their blocks).
+        let polar = u.iter().map(|x| x.z.abs()).fold(0.0, f64::max).min(1.0);
+        let (ns, ew) = (dy.to_radians() * r, dx.to_radians() * r * (1.0 - polar * polar).sqrt());
+        let target = ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m);
+        if !tree.splits_edge(node[1], node[2]) && u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target {
+            continue;
+        }
+        stack.extend(refiner.children(node));
+    }
+    // The faces of the refined (conforming) mesh that may hold a cell: a split's vertex leaves
+    // the split edge (eq. 2), so a node's children cover part of the neighbour across its
+    // refinement edge and the tree's nodes alone do not tile the sphere; the mesh's faces do.
+    let mesh = refiner.mesh();
+    let leaves: Vec<[u32; 3]> = (0..mesh.faces.len() as u32)
+        .map(|f| mesh.corners(f))
+        .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
+        .collect();
+    let n = (cols * rows) as usize;
+    let mut ground = vec![f32::NAN; n];
+    let mut water = vec![f32::NAN; n];
+    let mut owned = vec![false; n];
+    let sea = params.sea_level_m;
+    let lats: Vec<f64> = (0..rows).map(|i| b.lat_of(row0 + i, req.height)).collect();
+    let lons: Vec<f64> = (0..cols).map(|i| b.lon_of(col0 + i, req.width)).collect();
+    let dirs: Vec<DVec3> = lats.iter().flat_map(|&la| lons.iter().map(move |&lo| direction(la, lo))).collect();
+    // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
+    let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
+        let wgt = weights(n, dirs[i]);
+        let vs = leaf.map(|v| &mesh.vertices[v as usize]);
+        let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].ground).sum();
+        let mut water = f32::NAN;
+        // Water: the face's highest standing water at its dry corners (as `water.rs` does).
+        let wet = vs.iter().filter(|v| v.submerged()).map(|v| v.water).fold(f64::NEG_INFINITY, f64::max);
+        if wet > f64::NEG_INFINITY {
+            let level: f64 =
+                (0..3).map(|k| f64::from(wgt[k]) * if vs[k].submerged() { vs[k].water } else { wet }).sum();
+            if level > g {
+                water = (level - sea) as f32;
+            }
+        }
+        ((g - sea) as f32, water)
+    };
+    // Latitude and longitude of each vertex, computed once.
+    let mut lat_lons = vec![(f64::NAN, f64::NAN); mesh.vertices.len()];
+    let mut lat_lon_of = |v: u32| {
+        let slot = &mut lat_lons[v as usize];
+        if slot.0.is_nan() {
+            *slot = lat_lon(mesh.pos(v));
+        }
+        *slot
+    };
+    const EPS: f64 = 1e-7;
+    for leaf in &leaves {
+        let p = leaf.map(|v| mesh.pos(v));
+        let n = [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])];
+        let u = p.map(DVec3::normalize);
+        let size = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+        let ll = leaf.map(&mut lat_lon_of);
+        let (lo, hi, lon) = if size < 0.01 && ll.iter().all(|x| x.0.abs() < 89.0) {
+            // A small face away from the poles: its corners' ranges, widened by how far an
+            // edge's great circle bulges poleward (under (L^2 / 8) tan(lat) for an arc of L
+            // radians).
+            let polar = ll.iter().map(|x| x.0.abs()).fold(0.0, f64::max).to_radians();
+            let bulge = (size * size / 8.0 * (1.0 + polar.tan())).to_degrees();
+            let la = ll[0].1;
+            let (lb, lc) = (la + wrap180(ll[1].1 - la), la + wrap180(ll[2].1 - la));
+            let lats = ll.map(|x| x.0);
+            let (lo, hi) = (lats[0].min(lats[1]).min(lats[2]), lats[0].max(lats[1]).max(lats[2]));
+            (lo - bulge, hi + bulge, Some((la.min(lb).min(lc), la.max(lb).max(lc))))
+        } else {
+            triangle_bounds(u, &n)
+        };
+        let r0 = (((rect.north - hi - EPS) / dy - 0.5).ceil().max(0.0)) as u32;
+        let r1 = ((rect.north - lo + EPS) / dy - 0.5).floor();
+        if r1 < f64::from(r0) {
+            continue;
+        }
+        let r1 = (r1 as u32).min(rows - 1);
+        let ranges: Vec<(u32, u32)> = match lon {
+            None => vec![(0, cols - 1)],
+            Some((a, z)) => [0.0, -360.0, 360.0]
+                .iter()
+                .filter_map(|turn| {
+                    let c0 = ((a + turn - EPS - rect.west) / dx - 0.5).ceil().max(0.0);
+                    let c1 = ((z + turn + EPS - rect.west) / dx - 0.5).floor().min(f64::from(cols) - 1.0);
+                    (c1 >= c0).then_some((c0 as u32, c1 as u32))
+                })
+                .collect(),
+        };
+        for row in r0..=r1 {
+            for &(c0, c1) in &ranges {
+                for col in c0..=c1 {
+                    let i = (row * cols + col) as usize;
+                    if !owned[i] && inside(&n, dirs[i]) {
+                        (ground[i], water[i]) = sample(i, leaf, &n);
+                        owned[i] = true;
+                    }
+                }
+            }
+        }
+    }
+    // A cell no triangle claimed (rounding on an edge or corner): the leaf it lies least outside.
+    for i in 0..n {
+        if !owned[i] {
+            let d = dirs[i];
+            let planes = |leaf: &[u32; 3]| {
+                let p = leaf.map(|v| mesh.pos(v));
+                [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])]
+            };
+            let score = |leaf: &[u32; 3]| {
+                let n = planes(leaf);
+                n.iter().map(|m| d.dot(*m) / m.length().max(f64::MIN_POSITIVE)).fold(f64::INFINITY, f64::min)
+            };
+            if let Some(best) = leaves.iter().max_by(|a, b| score(a).total_cmp(&score(b))) {
+                (ground[i], water[i]) = sample(i, best, &planes(best));
+            }
+        }
+    }
+    let splits = refiner.splits();
+    (Block { col0, row0, cols, rows, ground, water }, splits)
+}
+
+/// A block's rectangle as half-spaces: the wedge between its west and east meridians (when
+/// narrower than 180°) and the slab between its latitudes.
+struct Region {
+    /// Normals of the meridian planes, pointing into the wedge (none when 180° or wider).
+    meridians: Option<[DVec3; 2]>,
+    /// `sin` of the south and north latitudes.
+    z: [f64; 2],
+}
+
+impl Region {
+    fn new(rect: GeoBounds) -> Region {
+        let (w, e) = (rect.west.to_radians(), rect.east.to_radians());
+        let meridians = (rect.east - rect.west < 180.0)
+            .then(|| [DVec3::new(-w.sin(), w.cos(), 0.0), DVec3::new(e.sin(), -e.cos(), 0.0)]);
+        Region { meridians, z: [rect.south.to_radians().sin(), rect.north.to_radians().sin()] }
+    }
+
+    /// Whether the spherical triangle with unit corners `u` may meet the rectangle (never
+    /// false when it does). The triangle is the cone of its corners, so a plane through the
+    /// centre has some of it on its inner side exactly when a corner is; against a latitude,
+    /// the edges' great circles may bulge poleward past the corners by up to `L^2 / 8` for an
+    /// edge of chord `L`, allowed as a margin of `L^2 / 4`.
+    #[inline]
+    fn may_meet(&self, u: &[DVec3; 3]) -> bool {
+        if let Some([nw, ne]) = self.meridians {
+            if u.iter().all(|x| nw.dot(*x) < 0.0) || u.iter().all(|x| ne.dot(*x) < 0.0) {
+                return false;
+            }
+        }
+        let size = u[0].distance_squared(u[1]).max(u[1].distance_squared(u[2])).max(u[2].distance_squared(u[0]));
+        let margin = size * 0.25 + 1e-12;
+        let (lo, hi) = (u[0].z.min(u[1].z).min(u[2].z), u[0].z.max(u[1].z).max(u[2].z));
+        lo <= self.z[1] + margin && hi >= self.z[0] - margin
+    }
+}
+
+#[cfg(test)]
+#[path = "dem_tests.rs"]
+mod tests;

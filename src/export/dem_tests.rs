@@ -1,0 +1,114 @@
+use super::*;
+use crate::export::test_planet;
+use crate::export::tiles::PlanetTiles;
+use std::sync::{Arc, OnceLock};
+
+fn tiles() -> &'static PlanetTiles {
+    static TILES: OnceLock<PlanetTiles> = OnceLock::new();
+    TILES.get_or_init(|| {
+        let params = Params { base_faces: 2000, ..Params::default() };
+        PlanetTiles::new(Arc::new(test_planet().clone()), params).expect("a bisection refinement")
+    })
+}
+
+/// A bbox of the test planet holding both land and sea.
+fn coast_bbox() -> String {
+    let planet = test_planet();
+    let sea = planet.mesh.vertices.iter().find(|v| v.ground < Params::default().sea_level_m - 100.0).unwrap();
+    let (lat, lon) = lat_lon(sea.p());
+    let (lat, lon) = (lat.clamp(-60.0, 60.0), lon.clamp(-150.0, 150.0));
+    format!("{},{},{},{}", lon - 20.0, lat - 15.0, lon + 20.0, lat + 15.0)
+}
+
+#[test]
+fn requests_are_checked_field_by_field() {
+    let max = DEFAULT_MAX_DEM_PIXELS;
+    let ok = DemRequest::new("10,40,12,41", 400, None, max).unwrap();
+    assert_eq!((ok.width, ok.height), (400, 200), "square cells in degrees");
+    assert_eq!(ok.pixel(), [0.005, 0.005]);
+    for (bbox, w, h, field) in [
+        ("10,40,12", 10, None, "bbox"),
+        ("10,40,10,41", 10, None, "bbox"),
+        ("-181,40,12,41", 10, None, "bbox"),
+        ("10,-91,12,41", 10, None, "bbox"),
+        ("12,40,10,41", 10, None, "bbox"),
+        ("10,40,12,41", 0, None, "width"),
+        ("10,40,12,41", 8193, None, "width"),
+        ("10,40,12,41", 10, Some(0), "height"),
+        ("10,40,12,41", 8192, Some(8192), "width"),
+        ("0,-80,0.001,80", 8192, None, "height"),
+    ] {
+        let e = DemRequest::new(bbox, w, h, max).unwrap_err();
+        assert_eq!(e.field, field, "{bbox} {w} {h:?}: {e}");
+    }
+}
+
+#[test]
+fn the_cog_holds_ground_and_water_bands_georeferenced() {
+    let req = DemRequest::new(&coast_bbox(), 300, Some(220), DEFAULT_MAX_DEM_PIXELS).unwrap();
+    let dem = tiles().dem(&req);
+    let bytes = dem_tiff(&dem);
+    assert_eq!(bytes, dem_tiff(&tiles().dem(&req)), "deterministic");
+    assert_eq!(&bytes[..4], b"II*\0");
+    // The file's two bands are read by GDAL in CI (`.ci/check_outputs.py`); the `tiff` crate
+    // reads single-band COGs only (see `cog.rs`).
+    let (ground, water) = (&dem.ground, &dem.water);
+    assert!(ground.iter().all(|g| g.is_finite()), "ground everywhere, the sea floor included");
+    let sea = ground.iter().zip(water).filter(|(g, _)| **g < -50.0).count();
+    let land = ground.iter().zip(water).filter(|(g, w)| **g > 50.0 && w.is_nan()).count();
+    assert!(sea > 1000 && land > 1000, "sea {sea}, dry land {land}");
+    // The sea's surface is at sea level; wherever water stands it is above the ground.
+    for (g, w) in ground.iter().zip(water) {
+        if *g < -50.0 {
+            assert!(w.abs() < 1e-3, "{g} {w}");
+        }
+        assert!(w.is_nan() || w > g, "{g} {w}");
+    }
+}
+
+#[test]
+fn finer_grids_refine_and_agree_with_the_base_mesh_on_it() {
+    let t = tiles();
+    let bbox = coast_bbox();
+    // 10° cells: coarser than the base mesh's edges (~500 km), so no split below it.
+    let coarse = t.dem(&DemRequest::new(&bbox, 4, Some(3), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    assert_eq!(coarse.splits, 0);
+    let fine = t.dem(&DemRequest::new(&bbox, 1000, Some(750), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    assert!(fine.splits > 100_000, "{}", fine.splits);
+    // Cells coarser than the base mesh sample the base mesh as the elevation raster does.
+    let req = coarse.request;
+    let raster = crate::mesh::raster::SphereRaster::new_in(&t.planet().mesh, req.bounds, req.width, req.height);
+    let sea = t.params().sea_level_m;
+    let base = raster.interpolate(&t.planet().mesh, |v| t.planet().mesh.vertices[v].ground - sea);
+    let worst = base.iter().zip(&coarse.ground).map(|(a, b)| (a - b).abs()).fold(0f32, f32::max);
+    assert!(worst < 0.01, "{worst} m");
+}
+
+#[test]
+fn a_window_of_a_dem_is_the_dem_of_the_window() {
+    // Same cells, different blocks: 600 x 400 cells, and the window of 230 x 150 cells starting
+    // at column 300, row 170 (crossing the 256-cell block borders of the larger one).
+    let t = tiles();
+    let (w0, s0, e0, n0) = (-30.0, -10.0, 30.0, 30.0);
+    let big = t.dem(&DemRequest::new(&format!("{w0},{s0},{e0},{n0}"), 600, Some(400), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let d = 0.1;
+    let (c0, r0, cw, rh) = (300u32, 170u32, 230u32, 150u32);
+    let bbox = format!(
+        "{},{},{},{}",
+        w0 + f64::from(c0) * d,
+        n0 - f64::from(r0 + rh) * d,
+        w0 + f64::from(c0 + cw) * d,
+        n0 - f64::from(r0) * d
+    );
+    let small = t.dem(&DemRequest::new(&bbox, cw, Some(rh), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let mut worst = 0f32;
+    for r in 0..rh {
+        for c in 0..cw {
+            let a = big.ground[((r0 + r) * 600 + c0 + c) as usize];
+            let b = small.ground[(r * cw + c) as usize];
+            worst = worst.max((a - b).abs());
+        }
+    }
+    // Cell centres agree to the last bits of the bbox arithmetic, so values to a millimetre.
+    assert!(worst < 1e-3, "{worst} m");
+}
