@@ -52,7 +52,8 @@ def write_geotiff(path, a, west, north, dx, dy):
 
 
 def planet_dem(binary, map_path, bbox, width, height, out):
-    cmd = [binary, "dem", "--map", map_path, "--bbox", ",".join(f"{v:.10f}" for v in bbox),
+    extra = os.environ.get("RIVERWORLD_DEM_ARGS", "").split()
+    cmd = [binary, "dem", *extra, "--map", map_path, "--bbox", ",".join(f"{v:.10f}" for v in bbox),
            "--width", str(width), "--height", str(height), "--out", out]
     res = subprocess.run(cmd, check=True, capture_output=True, text=True)
     stats = json.loads(res.stdout)

@@ -183,6 +183,8 @@ fn sample_block(
     let r = params.radius_m;
     let region = Region::new(rect);
     let mut refiner = Refiner::new(base, tree, params);
+    // About one split per cell at the finest, plus the border's.
+    refiner.reserve((cols as usize + 8) * (rows as usize + 8));
     let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
     while let Some(node) = stack.pop() {
         let u = node.map(|v| refiner.mesh().pos(v).normalize());

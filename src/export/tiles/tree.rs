@@ -110,6 +110,12 @@ impl<'a> Refiner<'a> {
         Refiner { base, tree, params, refined: None, midpoints: HashMap::default(), edges: HashMap::default() }
     }
 
+    /// Makes room for about `splits` more splits (their midpoints and edges).
+    pub fn reserve(&mut self, splits: usize) {
+        self.midpoints.reserve(splits);
+        self.edges.reserve(4 * splits);
+    }
+
     /// The mesh the node vertices index: the base mesh plus the splits made so far.
     pub fn mesh(&self) -> &Mesh {
         self.refined.as_ref().unwrap_or(self.base)
