@@ -40,6 +40,9 @@ struct SplitParams {
     roughness_length: f64,
     tangent_scale: f64,
     tangent_offset: f64,
+    // `Guide::min_edge_m` (`src/mesh/guide.rs`): continent splits of edges at least this long
+    // take the elevation map's ground.
+    guide_min_edge: f64,
     // Slots where the new vertices, edges and faces start.
     vertices: u32,
     edges: u32,
@@ -47,7 +50,20 @@ struct SplitParams {
     // Splits in the list, and invocations per row of the dispatch (split = x + y * row).
     count: u32,
     row: u32,
+    // The guide's faces (0: the planet has no elevation map) and cells along their sides.
+    guide_faces: u32,
+    guide_side: u32,
     _pad: u32,
+}
+
+// `GuideFace` of `src/mesh/guide.rs`.
+struct GuideFace {
+    centre: vec3<f64>,
+    x0: f64,
+    east: vec3<f64>,
+    y0: f64,
+    north: vec3<f64>,
+    step: f64,
 }
 
 @group(0) @binding(0) var<storage, read_write> vertices: array<Vertex>;
@@ -55,6 +71,8 @@ struct SplitParams {
 @group(0) @binding(2) var<storage, read_write> faces: array<Face>;
 @group(0) @binding(3) var<storage, read> list: array<u32>;
 @group(0) @binding(4) var<uniform> p: SplitParams;
+@group(0) @binding(5) var<storage, read> guide_faces: array<GuideFace>;
+@group(0) @binding(6) var<storage, read> guide_values: array<f32>;
 
 const SALT_XI: u32 = 1u;
 const SALT_ETA: u32 = 2u;
@@ -189,6 +207,50 @@ fn tangent_along(at: vec3<f64>, d: vec3<f64>) -> vec3<f64> {
 
 fn land_roughness(edge_len: f64) -> f64 {
     return p.roughness * edge_len / (p.one + edge_len / p.roughness_length);
+}
+
+// `Guide::at` (`src/mesh/guide.rs`): the elevation map's metres at unit direction `d`, if any.
+struct Guided {
+    found: bool,
+    metres: f64,
+}
+
+fn guide_dot(a: vec3<f64>, b: vec3<f64>) -> f64 {
+    return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
+
+fn guide_at(d: vec3<f64>) -> Guided {
+    var best = 0u;
+    var best_k = -F64_MAX;
+    for (var i = 0u; i < p.guide_faces; i++) {
+        let k = guide_dot(guide_faces[i].centre, d);
+        if k > best_k {
+            best_k = k;
+            best = i;
+        }
+    }
+    if p.guide_faces == 0u || best_k <= 0.0lf {
+        return Guided(false, 0.0lf);
+    }
+    let f = guide_faces[best];
+    let x = guide_dot(f.east, d) / best_k;
+    let y = guide_dot(f.north, d) / best_k;
+    let side = f64(p.guide_side);
+    let gx = min(max((x - f.x0) / f.step - p.half, 0.0lf), side - p.one);
+    let gy = min(max((y - f.y0) / f.step - p.half, 0.0lf), side - p.one);
+    let ix = min(floor(gx), side - 2.0lf);
+    let iy = min(floor(gy), side - 2.0lf);
+    let fx = gx - ix;
+    let fy = gy - iy;
+    let at = best * p.guide_side * p.guide_side + u32(iy) * p.guide_side + u32(ix);
+    let v00 = f64(guide_values[at]);
+    let v10 = f64(guide_values[at + 1u]);
+    let v01 = f64(guide_values[at + p.guide_side]);
+    let v11 = f64(guide_values[at + p.guide_side + 1u]);
+    let a = v00 + (v10 - v00) * fx;
+    let b = v01 + (v11 - v01) * fx;
+    let missing = min(min(v00, v10), min(v01, v11)) < -1.0e29lf;
+    return Guided(!missing, a + (b - a) * fy);
 }
 
 fn edge_centre(s: Site) -> vec3<f64> {
@@ -401,8 +463,18 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         }
     }
 
-    let mean = (((grounds[0] + grounds[1]) + grounds[2]) + grounds[3]) * p.quarter;
-    let wanted = mean + (xi - p.half) * land_roughness(edge_len);
+    // As on the CPU: the elevation map's ground where it resolves the split edge.
+    var wanted: f64;
+    var mapped = Guided(false, 0.0lf);
+    if edge_len >= p.guide_min_edge && p.guide_faces > 0u {
+        mapped = guide_at(at_unit);
+    }
+    if mapped.found {
+        wanted = p.sea_level + mapped.metres;
+    } else {
+        let mean = (((grounds[0] + grounds[1]) + grounds[2]) + grounds[3]) * p.quarter;
+        wanted = mean + (xi - p.half) * land_roughness(edge_len);
+    }
     let lo = max(bank_lo, slope_lo);
     var g: f64;
     if any_lo > hi {

@@ -167,7 +167,11 @@ fn merge_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
 pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params, view: &View) -> Vec<[bool; 4]> {
     super::compact::make_room(mesh, ready.len());
     // SAFETY: the split list holds distinct ready edges of this mesh ([`Selection::select`]).
-    unsafe { mesh.split_edges_judged(ready, |d| split_vertex(d, params), |edge, mid| wants_edge(view, edge, mid)) }
+    let guide = mesh.guide.clone();
+    let guide = guide.as_deref();
+    unsafe {
+        mesh.split_edges_judged(ready, |d| split_vertex(d, params, guide), |edge, mid| wants_edge(view, edge, mid))
+    }
 }
 
 #[cfg(test)]

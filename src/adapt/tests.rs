@@ -556,7 +556,7 @@ fn centimetre_edges_at_earth_radius() {
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;
     let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| {
-        crate::mesh::altitude::split_vertex(&crate::mesh::Diamond::new(m, site), &params)
+        crate::mesh::altitude::split_vertex(&crate::mesh::Diamond::new(m, site), &params, None)
     };
     let mut shortest = f64::MAX;
     for _ in 0..400 {

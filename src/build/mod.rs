@@ -12,6 +12,7 @@ pub mod rivers;
 pub mod shape;
 
 use crate::maps::{Map, MapKind};
+use crate::mesh::guide::Guide;
 use crate::mesh::{FaceKind, Mesh, VertexFlags};
 use crate::params::{ParamError, Params, MAX_BASE_FACES};
 use serde::{Deserialize, Serialize};
@@ -163,6 +164,8 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
+    // Splits below the base mesh follow an elevation map where it resolves them.
+    mesh.guide = spec.map.as_deref().and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
     let runoff_mm = runoff(&mesh, p.sea_level_m);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));

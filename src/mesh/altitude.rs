@@ -5,6 +5,7 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
+use super::guide::Guide;
 use super::terrain::{
     altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
     weighted_position, well_shaped_towards,
@@ -58,13 +59,14 @@ fn least_steep(neighbours: &[(f64, f64); 4]) -> f64 {
     best.1
 }
 
-/// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`.
-pub fn split_vertex(d: &Diamond, p: &Params) -> (Vertex, [EdgeKind; 4]) {
+/// The new vertex of a split during adaption, with the kinds of `[e1, e2, e3, e4]`; `guide`
+/// is the planet's elevation map, if it has one (see [`super::guide`]).
+pub fn split_vertex(d: &Diamond, p: &Params, guide: Option<&Guide>) -> (Vertex, [EdgeKind; 4]) {
     let seed = split_seed(d);
     let [f1, f2] = d.edge.face_kinds();
     let kinds = split_kinds(d.edge.kind, f1, f2);
     match d.edge.kind {
-        EdgeKind::Continent => continent_vertex(d, p, seed, kinds),
+        EdgeKind::Continent => continent_vertex(d, p, guide, seed, kinds),
         kind => wet_vertex(d, p, seed, split_position(d, seed, kind, p.min_river_length_m), kinds),
     }
 }
@@ -114,7 +116,13 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
 /// A continent split: ground altitude by midpoint displacement kept inside the riverbed bounds
 /// (eq. 11) and the maximum ground slope (eq. 12); or, where the rules allow it, the spring of a
 /// new river arm flowing into a neighbouring river vertex (eq. 10).
-fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]) -> (Vertex, [EdgeKind; 4]) {
+fn continent_vertex(
+    d: &Diamond,
+    p: &Params,
+    guide: Option<&Guide>,
+    seed: u32,
+    mut kinds: [EdgeKind; 4],
+) -> (Vertex, [EdgeKind; 4]) {
     let around = [d.a(), d.t(), d.b(), d.d()]; // the far ends of e1, e2, e3, e4
     let r = d.radius;
     let xi = altitude_random(seed);
@@ -192,8 +200,13 @@ fn continent_vertex(d: &Diamond, p: &Params, seed: u32, mut kinds: [EdgeKind; 4]
         }
     }
 
-    let mean = around.iter().map(|v| v.ground).sum::<f64>() * 0.25;
-    let wanted = mean + (xi - 0.5) * land_roughness(edge_len);
+    // Where the planet's elevation map resolves the split edge, its ground; below that (or
+    // without a map), the neighbours' mean plus a random offset.
+    let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and_then(|g| g.at(dir));
+    let wanted = match mapped {
+        Some(m) => p.sea_level_m + m,
+        None => around.iter().map(|v| v.ground).sum::<f64>() * 0.25 + (xi - 0.5) * land_roughness(edge_len),
+    };
     let lo = bank_lo.max(slope_lo);
     let g = if any_lo > hi {
         // The neighbours (wet ones included) are steeper than s_g across the diamond, or the

@@ -16,6 +16,7 @@ pub mod altitude;
 mod batch;
 mod collapse;
 mod diamond;
+pub mod guide;
 mod kinds;
 mod order;
 mod packed;
@@ -108,6 +109,8 @@ pub struct Mesh {
     pub vertices: Vec<Vertex>,
     pub edges: Vec<Edge>,
     pub faces: Vec<Face>,
+    /// The elevation map's ground for splits below the base mesh (elevation-map planets).
+    pub guide: Option<std::sync::Arc<guide::Guide>>,
 }
 
 impl Vertex {
@@ -232,7 +235,7 @@ impl Mesh {
     /// and for surface patches, whose border edges have one face (the other is [`NONE`]).
     pub fn from_triangles(radius: f64, vertices: Vec<Vertex>, tris: &[[u32; 3]]) -> Mesh {
         use std::collections::HashMap;
-        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new() };
+        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new(), guide: None };
         let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
         for (fi, t) in tris.iter().enumerate() {
             let mut face = Face { e: [NONE; 3] };

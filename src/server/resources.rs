@@ -166,9 +166,10 @@ fn render(
 /// a change to the software changes their bytes (revision 2: eq. 6 per side of the frustum, the
 /// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
 /// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
-/// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water), so
+/// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water; 6:
+/// splits of an elevation map planet follow the map where it resolves them), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-const ANSWERS_REVISION: &str = "5";
+const ANSWERS_REVISION: &str = "6";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -13,7 +13,7 @@ use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
 use crate::adapt::compact::N_ALLOC;
 use crate::adapt::{lap, AdaptStats, Adapter, View, MAX_PASSES};
-use crate::mesh::Renumbering;
+use crate::mesh::{Mesh, Renumbering};
 use std::time::Instant;
 
 /// The device copy of an adapter's mesh: equal to the host copy, or, with `ahead`, the newer
@@ -81,7 +81,12 @@ impl Adapter {
             }
             let mut sub = gpu.submission();
             if splits > 0 {
-                gpu.split.encode(gpu, &mut sub, &mut dm, &self.params, self.mesh.radius, splits);
+                let terrain = super::split::Terrain {
+                    params: &self.params,
+                    radius: self.mesh.radius,
+                    guide: self.base.guide.as_ref(),
+                };
+                gpu.split.encode(gpu, &mut sub, &mut dm, terrain, splits);
                 gpu.state.encode(gpu, &mut sub, &dm, view);
             }
             gpu.select.encode(gpu, &mut sub, &dm);
@@ -128,6 +133,7 @@ impl Adapter {
         let wanted = cap.is_none_or(|c| converged && dm.lens.2 <= c);
         if changed && wanted {
             self.mesh = download(gpu, &dm, self.mesh.radius)?;
+            self.mesh.guide = self.base.guide.clone();
         }
         self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
         Ok(converged)
@@ -169,7 +175,7 @@ impl Adapter {
         };
         match download(gpu, dm, self.mesh.radius) {
             Ok(mesh) => {
-                self.mesh = mesh;
+                self.mesh = Mesh { guide: self.base.guide.clone(), ..mesh };
                 self.resident.ahead = false;
             }
             Err(e) => {

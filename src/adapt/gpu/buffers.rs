@@ -218,6 +218,7 @@ impl DeviceMesh {
                 vertices: bytemuck::pod_collect_to_vec::<u8, Vertex>(&v?),
                 edges: checked_vec::<Edge>(&e?, "edge")?,
                 faces: checked_vec::<Face>(&f?, "face")?,
+                guide: None,
             });
         }
         let staging = scoped(gpu, || {
@@ -239,6 +240,7 @@ impl DeviceMesh {
                 vertices: bytemuck::pod_collect_to_vec::<u8, Vertex>(vertex_bytes),
                 edges: checked_vec::<Edge>(edge_bytes, "edge")?,
                 faces: checked_vec::<Face>(face_bytes, "face")?,
+                guide: None,
             })
         })?
     }

@@ -239,7 +239,8 @@ mod tests {
             .collect();
         let rw = wgpu::BufferBindingType::Storage { read_only: false };
         let ro = wgpu::BufferBindingType::Storage { read_only: true };
-        assert_eq!(kinds, [(0, rw), (1, rw), (2, rw), (3, ro), (4, wgpu::BufferBindingType::Uniform)]);
+        let uniform = wgpu::BufferBindingType::Uniform;
+        assert_eq!(kinds, [(0, rw), (1, rw), (2, rw), (3, ro), (4, uniform), (5, ro), (6, ro)]);
     }
 
     #[test]

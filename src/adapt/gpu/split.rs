@@ -6,10 +6,12 @@
 use super::buffers::DeviceMesh;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
 use crate::mesh::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS};
+use crate::mesh::guide::{Guide, GuideFace};
 use crate::mesh::terrain::MIN_SPLIT_QUALITY;
 use crate::mesh::Tangent;
 use crate::params::Params;
 use bytemuck::{Pod, Zeroable};
+use std::sync::{Arc, Mutex};
 
 pub(super) const WORKGROUP: u32 = 64;
 
@@ -39,16 +41,26 @@ pub(super) struct SplitParams {
     roughness_length: f64,
     tangent_scale: f64,
     tangent_offset: f64,
+    guide_min_edge: f64,
     vertices: u32,
     edges: u32,
     faces: u32,
     count: u32,
     row: u32,
+    guide_faces: u32,
+    guide_side: u32,
     _pad: u32,
 }
 
 impl SplitParams {
-    fn new(p: &Params, radius: f64, lens: (usize, usize, usize), count: u32, row: u32) -> SplitParams {
+    fn new(
+        p: &Params,
+        radius: f64,
+        lens: (usize, usize, usize),
+        count: u32,
+        row: u32,
+        guide: Option<&Guide>,
+    ) -> SplitParams {
         SplitParams {
             radius,
             sea_level: p.sea_level_m,
@@ -72,18 +84,54 @@ impl SplitParams {
             roughness_length: LAND_ROUGHNESS_LENGTH,
             tangent_scale: Tangent::SCALE,
             tangent_offset: Tangent::OFFSET,
+            guide_min_edge: guide.map_or(0.0, |g| g.min_edge_m),
             vertices: lens.0 as u32,
             edges: lens.1 as u32,
             faces: lens.2 as u32,
             count,
             row,
+            guide_faces: guide.map_or(0, |g| g.faces.len() as u32),
+            guide_side: guide.map_or(0, |g| g.side),
             _pad: 0,
         }
     }
 }
 
+/// What a split's terrain depends on besides its diamond: the parameters, the base sphere's
+/// radius and the planet's elevation map.
+#[derive(Clone, Copy)]
+pub(super) struct Terrain<'a> {
+    pub params: &'a Params,
+    pub radius: f64,
+    pub guide: Option<&'a Arc<Guide>>,
+}
+
 pub(super) struct SplitPipeline {
     pipeline: wgpu::ComputePipeline,
+    /// The device copy of the last guide used (by its address, kept alive by the `Arc`), or of
+    /// none: one small placeholder pair.
+    guide: Mutex<Option<(Arc<Guide>, Arc<GuideBuffers>)>>,
+    no_guide: GuideBuffers,
+}
+
+/// A guide's faces and values on the device.
+struct GuideBuffers {
+    faces: wgpu::Buffer,
+    values: wgpu::Buffer,
+}
+
+impl GuideBuffers {
+    fn new(device: &wgpu::Device, faces: &[u8], values: &[u8]) -> GuideBuffers {
+        use wgpu::util::DeviceExt;
+        let make = |label, contents: &[u8]| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents,
+                usage: wgpu::BufferUsages::STORAGE,
+            })
+        };
+        GuideBuffers { faces: make("guide faces", faces), values: make("guide values", values) }
+    }
 }
 
 impl SplitPipeline {
@@ -93,7 +141,29 @@ impl SplitPipeline {
             "adapt_split.wgsl",
             &[include_str!("../../../shaders/adapt_split.wgsl"), super::EDGE_HELPERS],
         )?;
-        Ok(SplitPipeline { pipeline: super::pipeline(device, &module, "split_edges") })
+        let no_guide = GuideBuffers::new(device, &[0; std::mem::size_of::<GuideFace>()], &[0; 4]);
+        Ok(SplitPipeline {
+            pipeline: super::pipeline(device, &module, "split_edges"),
+            guide: Mutex::new(None),
+            no_guide,
+        })
+    }
+
+    /// The device copy of `guide`, made on first use.
+    fn guide_buffers(&self, device: &wgpu::Device, guide: &Arc<Guide>) -> Arc<GuideBuffers> {
+        let mut cached = self.guide.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((g, b)) = cached.as_ref() {
+            if Arc::ptr_eq(g, guide) {
+                return Arc::clone(b);
+            }
+        }
+        let made = Arc::new(GuideBuffers::new(
+            device,
+            bytemuck::cast_slice(&guide.faces),
+            bytemuck::cast_slice(&guide.values),
+        ));
+        *cached = Some((Arc::clone(guide), Arc::clone(&made)));
+        made
     }
 
     /// Records the splits of the first `count` edges of `dm.list` (room reserved) and counts
@@ -103,20 +173,30 @@ impl SplitPipeline {
         gpu: &GpuAdaption,
         sub: &mut Submission,
         dm: &mut DeviceMesh,
-        params: &Params,
-        radius: f64,
+        terrain: Terrain,
         count: usize,
     ) {
         if count == 0 {
             return;
         }
+        let Terrain { params, radius, guide } = terrain;
+        let held = guide.map(|g| self.guide_buffers(&gpu.device, g));
+        let buffers = held.as_deref().unwrap_or(&self.no_guide);
         let (gx, gy, row) = dispatch_grid(&gpu.device, count as u32, WORKGROUP);
-        let sp = SplitParams::new(params, radius, dm.lens, count as u32, row);
+        let sp = SplitParams::new(params, radius, dm.lens, count as u32, row, guide.map(|g| &**g));
         gpu.queue.write_buffer(&dm.split, 0, bytemuck::bytes_of(&sp));
         let bind = super::bind(
             &gpu.device,
             &self.pipeline,
-            &[(0, &dm.vertices), (1, &dm.edges), (2, &dm.faces), (3, &dm.list), (4, &dm.split)],
+            &[
+                (0, &dm.vertices),
+                (1, &dm.edges),
+                (2, &dm.faces),
+                (3, &dm.list),
+                (4, &dm.split),
+                (5, &buffers.faces),
+                (6, &buffers.values),
+            ],
         );
         {
             let mut pass = sub.pass(gpu, Stage::Split);

@@ -411,11 +411,14 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
     let params = Params::default();
     let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(Arc::new(map)) };
     let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
+    let guide = planet.mesh.guide.clone().expect("an elevation map guides the splits");
     let r = params.radius_m;
     let mut cpu = Adapter::new(planet.mesh.clone(), params.clone());
     let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
-    // Over the Caspian (a terminal lake) and the Great Lakes.
-    for (i, (lat, lon, height)) in [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4)].into_iter().enumerate() {
+    // Over the Caspian (a terminal lake), the Great Lakes and the Himalaya (splits that take
+    // the map's ground).
+    let cameras = [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4), (28.0, 86.0, 4e5)];
+    for (i, (lat, lon, height)) in cameras.into_iter().enumerate() {
         let dir = crate::build::continents::direction(lat, lon);
         let north = (DVec3::Z - dir * dir.z).normalize();
         let target = (dir + north * 0.01).normalize() * r;
@@ -430,7 +433,19 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
             .iter()
             .filter(|v| v.flags.contains(lake) && v.flags.contains(crate::mesh::VertexFlags::REFINED))
             .count();
-        assert!(refined_lake > 100, "camera {i}: {refined_lake} refined lake vertices");
+        if i < 2 {
+            assert!(refined_lake > 100, "camera {i}: {refined_lake} refined lake vertices");
+        }
+        // Refined dry vertices standing where the map puts them.
+        let sea = params.sea_level_m;
+        let mapped = cpu
+            .mesh()
+            .vertices
+            .iter()
+            .filter(|v| v.flags == crate::mesh::VertexFlags::REFINED | crate::mesh::VertexFlags::CONTINENT)
+            .filter(|v| guide.at(v.p().normalize()).is_some_and(|m| (v.ground - sea - m).abs() < 1e-6))
+            .count();
+        assert!(mapped > 20, "camera {i}: {mapped} vertices on the map's ground");
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }
 }

@@ -139,11 +139,13 @@ impl<'a> Refiner<'a> {
             .or_else(|| self.tree.edges.get(&key))
             .expect("an unsplit edge of the tree is an edge of the mesh");
         let params = self.params;
+        let guide = self.base.guide.clone();
+        let guide = guide.as_deref();
         let mesh = self.refined.get_or_insert_with(|| self.base.clone());
         let mut sites: Vec<SplitSite> = Vec::new();
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
-            split_vertex(&crate::mesh::Diamond::new(m, site), params)
+            split_vertex(&crate::mesh::Diamond::new(m, site), params, guide)
         });
         for (site, split) in sites.iter().zip(&splits) {
             let m = split.v;

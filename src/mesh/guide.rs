@@ -1,0 +1,248 @@
+//! The elevation map's ground for vertices made below the base mesh's resolution.
+//!
+//! The base mesh of an elevation map keeps the map at its own resolution only (refinement edges
+//! of a few map pixels, `build::map_edge_length`); a split of a continent edge longer than the
+//! map's pixel takes its ground from the map instead of from its neighbours' mean plus noise
+//! (`altitude.rs`), so views, tiles and DEMs show the map's valleys and ridges wherever it has
+//! them, and add random detail only below its resolution.
+//!
+//! **Grid.** The map is resampled, once per planet, onto gnomonic grids: the six faces of a
+//! cube for a global map, one tangent plane at the bounds' centre for a regional map. A
+//! direction `d` is looked up on the face whose centre `c` it is nearest (largest `d·c`) at
+//! `x = d·e / d·c`, `y = d·n / d·c` (the face's east and north axes), bilinearly between the
+//! four cells around it. Every step is an addition, multiplication, division, comparison or
+//! `floor`, so the WGSL twin in `adapt_split.wgsl` gets the same bits. Values are `f32` metres
+//! relative to sea level; NaN where the map has no data or does not reach.
+
+use crate::maps::{Map, MapKind};
+use glam::DVec3;
+
+/// Most cells along a face's side.
+pub const MAX_SIDE: u32 = 1024;
+/// A cell without data (stored instead of NaN, which shader compilers may assume away).
+pub const NO_DATA: f32 = -1.0e30;
+
+/// One gnomonic face: its centre and axes, and its grid's origin and cell size in tangent-plane
+/// units. Laid out as the WGSL `GuideFace` reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GuideFace {
+    pub centre: [f64; 3],
+    pub x0: f64,
+    pub east: [f64; 3],
+    pub y0: f64,
+    pub north: [f64; 3],
+    pub step: f64,
+}
+
+/// The map resampled for the splits.
+#[derive(Clone, Debug)]
+pub struct Guide {
+    pub faces: Vec<GuideFace>,
+    /// Cells along each side of every face.
+    pub side: u32,
+    /// `side * side` values per face, face after face, row-major from `(x0, y0)`.
+    pub values: Vec<f32>,
+    /// Splits of edges at least this long (m) follow the map: about the map's pixel.
+    pub min_edge_m: f64,
+}
+
+impl PartialEq for Guide {
+    fn eq(&self, other: &Guide) -> bool {
+        self.faces == other.faces
+            && self.side == other.side
+            && self.min_edge_m.to_bits() == other.min_edge_m.to_bits()
+            && self.values.iter().map(|v| v.to_bits()).eq(other.values.iter().map(|v| v.to_bits()))
+    }
+}
+
+#[inline]
+fn dot(a: [f64; 3], b: DVec3) -> f64 {
+    (a[0] * b.x + a[1] * b.y) + a[2] * b.z
+}
+
+impl Guide {
+    /// The guide of an elevation map on a planet of `radius`; None for continent bitmaps.
+    pub fn from_map(map: &Map, radius: f64) -> Option<Guide> {
+        if map.kind != MapKind::Elevation {
+            return None;
+        }
+        let (_, dlat) = map.pixel_size_deg();
+        let pixel = dlat.to_radians(); // tangent-plane units near a face's centre
+        let b = map.bounds;
+        let (faces, side): (Vec<GuideFace>, u32) = if b.is_global() {
+            let axes = [
+                (DVec3::X, DVec3::Y, DVec3::Z),
+                (DVec3::NEG_X, DVec3::NEG_Y, DVec3::Z),
+                (DVec3::Y, DVec3::NEG_X, DVec3::Z),
+                (DVec3::NEG_Y, DVec3::X, DVec3::Z),
+                (DVec3::Z, DVec3::Y, DVec3::NEG_X),
+                (DVec3::NEG_Z, DVec3::Y, DVec3::X),
+            ];
+            let side = ((2.0 / pixel).ceil() as u32).clamp(2, MAX_SIDE);
+            let faces = axes
+                .iter()
+                .map(|&(c, e, n)| GuideFace {
+                    centre: c.to_array(),
+                    east: e.to_array(),
+                    north: n.to_array(),
+                    x0: -1.0,
+                    y0: -1.0,
+                    step: 2.0 / f64::from(side),
+                })
+                .collect();
+            (faces, side)
+        } else {
+            let c = crate::geo::direction((b.north + b.south) * 0.5, (b.west + b.east) * 0.5);
+            let e = DVec3::Z.cross(c).try_normalize().unwrap_or(DVec3::Y);
+            let n = c.cross(e);
+            // The bounds' extent on the plane, from points along its border.
+            let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+            for i in 0..=64 {
+                let t = f64::from(i) / 64.0;
+                for (lat, lon) in [
+                    (b.south, b.west + t * (b.east - b.west)),
+                    (b.north, b.west + t * (b.east - b.west)),
+                    (b.south + t * (b.north - b.south), b.west),
+                    (b.south + t * (b.north - b.south), b.east),
+                ] {
+                    let d = crate::geo::direction(lat, lon);
+                    let k = d.dot(c);
+                    if k <= 0.05 {
+                        return None; // wider than the plane can hold
+                    }
+                    let p = DVec3::new(d.dot(e) / k, d.dot(n) / k, 0.0);
+                    lo = lo.min(p);
+                    hi = hi.max(p);
+                }
+            }
+            let extent = (hi.x - lo.x).max(hi.y - lo.y);
+            let side = ((extent / pixel).ceil() as u32 + 2).clamp(2, MAX_SIDE);
+            let step = extent / f64::from(side - 2);
+            let face = GuideFace {
+                centre: c.to_array(),
+                east: e.to_array(),
+                north: n.to_array(),
+                x0: lo.x - step,
+                y0: lo.y - step,
+                step,
+            };
+            (vec![face], side)
+        };
+        let values: Vec<f32> = faces
+            .iter()
+            .flat_map(|f| {
+                (0..side * side).map(move |i| {
+                    let (col, row) = (i % side, i / side);
+                    let x = f.x0 + (f64::from(col) + 0.5) * f.step;
+                    let y = f.y0 + (f64::from(row) + 0.5) * f.step;
+                    let d = (DVec3::from(f.centre) + DVec3::from(f.east) * x + DVec3::from(f.north) * y).normalize();
+                    let (lat, lon) = crate::geo::lat_lon(d);
+                    map.sample(lat, lon).filter(|v| v.is_finite()).unwrap_or(NO_DATA)
+                })
+            })
+            .collect();
+        Some(Guide { faces, side, values, min_edge_m: pixel * radius })
+    }
+
+    /// Metres relative to sea level the map asks for in unit direction `d`, if it has data there.
+    pub fn at(&self, d: DVec3) -> Option<f64> {
+        let mut best = 0usize;
+        let mut best_k = f64::MIN;
+        for (i, f) in self.faces.iter().enumerate() {
+            let k = dot(f.centre, d);
+            if k > best_k {
+                best_k = k;
+                best = i;
+            }
+        }
+        if best_k <= 0.0 {
+            return None;
+        }
+        let f = &self.faces[best];
+        let x = dot(f.east, d) / best_k;
+        let y = dot(f.north, d) / best_k;
+        let side = f64::from(self.side);
+        let gx = (x - f.x0) / f.step - 0.5;
+        let gy = (y - f.y0) / f.step - 0.5;
+        // Clamped to the cell centres (a cube face's outer half cells; a regional grid's
+        // margin holds NaN, so directions beyond it find no data).
+        let (gx, gy) = (gx.max(0.0).min(side - 1.0), gy.max(0.0).min(side - 1.0));
+        let (ix, iy) = (gx.floor().min(side - 2.0), gy.floor().min(side - 2.0));
+        let (fx, fy) = (gx - ix, gy - iy);
+        let at = best * (self.side * self.side) as usize + iy as usize * self.side as usize + ix as usize;
+        let s = self.side as usize;
+        let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
+        // Written out as `adapt_split.wgsl` computes it.
+        let a = v00 + (v10 - v00) * fx;
+        let b = v01 + (v11 - v01) * fx;
+        let missing = [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29);
+        (!missing).then_some(a + (b - a) * fy)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geo::direction;
+    use crate::maps::GeoBounds;
+
+    const R: f64 = 6_371_000.0;
+
+    /// A field smooth on the sphere (linear in the direction), so that resampling errors stay
+    /// small against its range (±2000 m).
+    fn field(lat: f64, lon: f64) -> f32 {
+        (2000.0 * direction(lat, lon).dot(glam::DVec3::new(0.3, 0.5, 0.8).normalize())) as f32
+    }
+
+    fn map(w: u32, h: u32, b: GeoBounds, hole: bool) -> Map {
+        let values = (0..w * h)
+            .map(|i| {
+                let (lat, lon) = (b.lat_of(i / w, h), b.lon_of(i % w, w));
+                if hole && (lat - 45.0).abs() < 3.0 && (lon - 10.0).abs() < 3.0 {
+                    f32::NAN
+                } else {
+                    field(lat, lon)
+                }
+            })
+            .collect();
+        Map::from_values(MapKind::Elevation, w, h, b, values).unwrap()
+    }
+
+    #[test]
+    fn a_global_guide_gives_the_map_everywhere() {
+        let g = Guide::from_map(&map(512, 256, GeoBounds::GLOBE, true), R).unwrap();
+        assert_eq!(g.faces.len(), 6);
+        assert!((g.min_edge_m - R * (180.0f64 / 256.0).to_radians()).abs() < 1e-6);
+        let mut worst = 0f64;
+        for i in 0..4000 {
+            let lat = -89.0 + 178.0 * ((i * 7919) % 4000) as f64 / 4000.0;
+            let lon = -180.0 + 360.0 * ((i * 104_729) % 4000) as f64 / 4000.0;
+            let at = g.at(direction(lat, lon));
+            if (lat - 45.0).abs() < 4.0 && (lon - 10.0).abs() < 4.0 {
+                continue; // next to the hole
+            }
+            worst = worst.max((at.unwrap() - f64::from(field(lat, lon))).abs());
+        }
+        // Two bilinear resamplings of a field with slopes up to 2000 m per radian, over cells
+        // of ~0.012 radians: errors of a few metres (the map's own cells are tall near the poles).
+        assert!(worst < 10.0, "{worst} m");
+        assert_eq!(g.at(direction(45.0, 10.0)), None, "no data in the hole");
+    }
+
+    #[test]
+    fn a_regional_guide_ends_at_its_bounds() {
+        let b = GeoBounds { west: 5.0, south: 40.0, east: 15.0, north: 50.0 };
+        let g = Guide::from_map(&map(200, 200, b, false), R).unwrap();
+        assert_eq!(g.faces.len(), 1);
+        let inside = g.at(direction(44.0, 8.0)).unwrap();
+        assert!((inside - f64::from(field(44.0, 8.0))).abs() < 10.0, "{inside}");
+        for (lat, lon) in [(30.0, 8.0), (44.0, 25.0), (-44.0, -170.0), (60.0, 10.0)] {
+            assert_eq!(g.at(direction(lat, lon)), None, "{lat},{lon}");
+        }
+        // Continent bitmaps have no ground to give.
+        let values = vec![1.0; 16];
+        let bitmap = Map::from_values(MapKind::Continents, 4, 4, b, values).unwrap();
+        assert!(Guide::from_map(&bitmap, R).is_none());
+    }
+}
