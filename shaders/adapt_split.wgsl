@@ -38,6 +38,7 @@ struct SplitParams {
     sea_roughness: f64,
     roughness: f64,
     roughness_length: f64,
+    sea_roughness_length: f64,
     tangent_scale: f64,
     tangent_offset: f64,
     // `Guide::min_edge_m` (`src/mesh/guide.rs`): continent splits of edges at least this long
@@ -209,6 +210,10 @@ fn land_roughness(edge_len: f64) -> f64 {
     return p.roughness * edge_len / (p.one + edge_len / p.roughness_length);
 }
 
+fn sea_roughness(edge_len: f64) -> f64 {
+    return p.sea_roughness * edge_len / (p.one + edge_len / p.sea_roughness_length);
+}
+
 // `Guide::at` (`src/mesh/guide.rs`): the elevation map's metres at unit direction `d`, if any.
 struct Guided {
     found: bool,
@@ -346,8 +351,18 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     let mid_ground = (va.ground + vb.ground) * p.half;
     let len = distance3(pos(s.a), pos(s.b));
     if kind == KIND_SEA {
-        let g = min(mid_ground + (xi - p.half) * len * p.sea_roughness, sea - p.one);
-        return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
+        // As on the CPU: the elevation map's sea floor where it resolves the split edge.
+        var mapped = Guided(false, 0.0lf);
+        if len >= p.guide_min_edge && p.guide_faces > 0u {
+            mapped = guide_at(normalize3(at));
+        }
+        var g: f64;
+        if mapped.found {
+            g = sea + mapped.metres;
+        } else {
+            g = mid_ground + (xi - p.half) * sea_roughness(len);
+        }
+        return new_vertex(at, seed, min(g, sea - p.one), sea, FLAG_REFINED, 0u);
     }
     if kind == KIND_COAST {
         let rough = min(p.riverbed_edge_height, land_roughness(len));

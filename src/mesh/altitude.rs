@@ -15,9 +15,17 @@ use crate::params::Params;
 use crate::rng::{salt, unit};
 use glam::DVec3;
 
-/// Relative roughness of the sea floor's midpoint displacement (offset per metre of edge length
-/// at the extremes of the random number).
+/// [`sea_roughness`]: the sea floor's offset range per metre of a short edge, and the edge
+/// length at which it has flattened to half of that.
 pub const SEA_ROUGHNESS: f64 = 0.02;
+pub const SEA_ROUGHNESS_LENGTH: f64 = 50_000.0;
+
+/// Full range of the random offset a sea split adds to the mean of its edge's ends: 2 % of the
+/// edge (the paper's rule) for short edges, flattening to ~1,000 m for long ones. (Unflattened,
+/// the splits of a coarse base mesh's 1,000 km edges piled up a sea floor 16 km deep.)
+pub fn sea_roughness(edge_len: f64) -> f64 {
+    SEA_ROUGHNESS * edge_len / (1.0 + edge_len / SEA_ROUGHNESS_LENGTH)
+}
 /// [`land_roughness`]: the offset range per metre of a short edge, and the edge length at which
 /// it has flattened to half of that.
 pub const LAND_ROUGHNESS: f64 = 0.15;
@@ -67,13 +75,21 @@ pub fn split_vertex(d: &Diamond, p: &Params, guide: Option<&Guide>) -> (Vertex, 
     let kinds = split_kinds(d.edge.kind, f1, f2);
     match d.edge.kind {
         EdgeKind::Continent => continent_vertex(d, p, guide, seed, kinds),
-        kind => wet_vertex(d, p, seed, split_position(d, seed, kind, p.min_river_length_m), kinds),
+        kind => wet_vertex(d, p, guide, seed, split_position(d, seed, kind, p.min_river_length_m), kinds),
     }
 }
 
-/// Sea, coast and river splits (§5.3 step 6): the sea floor by midpoint displacement below sea
-/// level, a coast point near sea level, or the river interpolated between its ends.
-pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKind; 4]) -> (Vertex, [EdgeKind; 4]) {
+/// Sea, coast and river splits (§5.3 step 6): the sea floor (from the planet's elevation map
+/// where it resolves the split edge, else by midpoint displacement) below sea level, a coast
+/// point near sea level, or the river interpolated between its ends.
+pub fn wet_vertex(
+    d: &Diamond,
+    p: &Params,
+    guide: Option<&Guide>,
+    seed: u32,
+    pos: DVec3,
+    kinds: [EdgeKind; 4],
+) -> (Vertex, [EdgeKind; 4]) {
     let edge = &d.edge;
     let (va, vb) = (d.a(), d.b());
     let xi = altitude_random(seed);
@@ -81,8 +97,12 @@ pub fn wet_vertex(d: &Diamond, p: &Params, seed: u32, pos: DVec3, kinds: [EdgeKi
     let mid_ground = (va.ground + vb.ground) * 0.5;
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
-            let g = (mid_ground + (xi - 0.5) * d.edge_length() * SEA_ROUGHNESS).min(sea - 1.0);
-            (g, sea, VertexFlags::empty())
+            let len = d.edge_length();
+            let g = match guide.filter(|g| len >= g.min_edge_m).and_then(|g| g.at(pos.normalize())) {
+                Some(m) => sea + m,
+                None => mid_ground + (xi - 0.5) * sea_roughness(len),
+            };
+            (g.min(sea - 1.0), sea, VertexFlags::empty())
         }
         EdgeKind::Coast => {
             // A shore point: the mean of its ends plus an offset of at most a riverbank's height

@@ -5,7 +5,7 @@
 
 use super::buffers::DeviceMesh;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
-use crate::mesh::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS};
+use crate::mesh::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS, SEA_ROUGHNESS_LENGTH};
 use crate::mesh::guide::{Guide, GuideFace};
 use crate::mesh::terrain::MIN_SPLIT_QUALITY;
 use crate::mesh::Tangent;
@@ -39,6 +39,7 @@ pub(super) struct SplitParams {
     sea_roughness: f64,
     roughness: f64,
     roughness_length: f64,
+    sea_roughness_length: f64,
     tangent_scale: f64,
     tangent_offset: f64,
     guide_min_edge: f64,
@@ -82,6 +83,7 @@ impl SplitParams {
             sea_roughness: SEA_ROUGHNESS,
             roughness: LAND_ROUGHNESS,
             roughness_length: LAND_ROUGHNESS_LENGTH,
+            sea_roughness_length: SEA_ROUGHNESS_LENGTH,
             tangent_scale: Tangent::SCALE,
             tangent_offset: Tangent::OFFSET,
             guide_min_edge: guide.map_or(0.0, |g| g.min_edge_m),
