@@ -112,6 +112,46 @@ async fn map_upload_builds_and_serves_every_file() {
     let res = s.get(&format!("/v1/planets/{id}/dem.tif?width=160&height=80&bbox=-20%2C-10%2C20%2C10")).await;
     assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
     assert_eq!(res.bytes().await.unwrap(), dem);
+    // Elevation tiles for MapLibre: TileJSON with absolute tile URLs; a tile is a 512x512 PNG
+    // whose colours decode to the ground's heights, alike in both encodings.
+    let tj: Value = s.get(&format!("/v1/planets/{id}/dem/tilejson.json")).await.json().await.unwrap();
+    assert_eq!((tj["tilejson"].as_str(), tj["encoding"].as_str()), (Some("3.0.0"), Some("terrarium")));
+    assert_eq!(
+        (tj["tileSize"].as_u64(), tj["minzoom"].as_u64(), tj["maxzoom"].as_u64()),
+        (Some(512), Some(0), Some(14))
+    );
+    let url = tj["tiles"][0].as_str().unwrap().to_string();
+    assert!(
+        url.starts_with("http://127.0.0.1:") && url.ends_with(&format!("/v1/planets/{id}/dem/{{z}}/{{x}}/{{y}}.png")),
+        "{url}"
+    );
+    let heights = |bytes: &[u8], mapbox: bool| -> Vec<f64> {
+        let img = image::load_from_memory(bytes).unwrap().to_rgb8();
+        assert_eq!(img.dimensions(), (512, 512));
+        img.pixels()
+            .map(|p| {
+                let [r, g, b] = p.0.map(f64::from);
+                if mapbox {
+                    -10000.0 + (r * 65536.0 + g * 256.0 + b) * 0.1
+                } else {
+                    r * 256.0 + g + b / 256.0 - 32768.0
+                }
+            })
+            .collect()
+    };
+    let res = s.client.get(url.replace("{z}/{x}/{y}", "1/1/0")).send().await.unwrap();
+    assert_eq!(res.status().as_u16(), 200);
+    assert_eq!(res.headers()["content-type"], "image/png");
+    let terrarium = heights(&res.bytes().await.unwrap(), false);
+    let (lo, hi) = terrarium.iter().fold((f64::MAX, f64::MIN), |(a, b), &h| (a.min(h), b.max(h)));
+    assert!(-12_000.0 < lo && lo < hi && hi < 12_000.0, "{lo}..{hi}");
+    let tj: Value = s.get(&format!("/v1/planets/{id}/dem/tilejson.json?encoding=mapbox")).await.json().await.unwrap();
+    let url = tj["tiles"][0].as_str().unwrap().to_string();
+    assert!(url.ends_with(".png?encoding=mapbox"), "{url}");
+    let mapbox =
+        heights(&s.client.get(url.replace("{z}/{x}/{y}", "1/1/0")).send().await.unwrap().bytes().await.unwrap(), true);
+    let worst = terrarium.iter().zip(&mapbox).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    assert!(worst <= 0.06, "{worst} m between the encodings");
     // JSON is compressed when the client accepts it.
     let res = s
         .client

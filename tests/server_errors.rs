@@ -90,9 +90,22 @@ async fn bad_requests_name_their_problem() {
         (format!("/v1/planets/{id}/dem.tif?bbox=170,2,190,4&width=5"), "invalid_bbox", "bbox"),
         (format!("/v1/planets/{id}/dem.tif?bbox=1,2,1,4&width=5"), "invalid_bbox", "bbox"),
         (format!("/v1/planets/{id}/dem.tif?bbox=1,2,3,4&width=5&crs=3857"), "unknown_parameter", "crs"),
+        (format!("/v1/planets/{id}/dem/a/0/0.png"), "invalid_tile", "tile"),
+        (format!("/v1/planets/{id}/dem/1/0/0.jpg"), "invalid_tile", "tile"),
+        (format!("/v1/planets/{id}/dem/1/0/-1.png"), "invalid_tile", "tile"),
+        (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=rgb"), "invalid_parameter", "encoding"),
+        (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=mapbox&encoding=mapbox"), "duplicate_parameter", "encoding"),
+        (format!("/v1/planets/{id}/dem/tilejson.json?format=png"), "unknown_parameter", "format"),
     ] {
         let err = expect_error(s.get(&path).await, 422, code).await;
         assert_eq!(err["field"], field, "{path}");
+    }
+    // Tiles outside the scheme, or deeper than its deepest zoom: 404.
+    for tile in ["15/0/0", "2/4/0", "2/0/4", "99999999999/0/0"] {
+        let path = format!("/v1/planets/{id}/dem/{tile}.png");
+        let res = s.get(&path).await;
+        let want = if tile.starts_with("9999") { 422 } else { 404 };
+        assert_eq!(res.status().as_u16(), want, "{path}");
     }
     s.stop().await;
 }

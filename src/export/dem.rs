@@ -45,6 +45,56 @@ pub struct DemRequest {
     pub bounds: GeoBounds,
     pub width: u32,
     pub height: u32,
+    /// How rows divide the bounds' latitudes.
+    pub rows: Rows,
+}
+
+/// How a grid's rows divide its latitudes (columns always divide longitudes evenly).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rows {
+    /// Equal steps of latitude (EPSG:4326).
+    Degrees,
+    /// Equal steps of Web Mercator `y` (EPSG:3857 tiles: square cells).
+    Mercator,
+}
+
+/// Web Mercator `y` (radians of the projection) of a latitude in degrees.
+pub fn mercator_y(lat_deg: f64) -> f64 {
+    lat_deg.to_radians().tan().asinh()
+}
+
+/// Latitude in degrees of a Web Mercator `y`.
+pub fn mercator_lat(y: f64) -> f64 {
+    y.sinh().atan().to_degrees()
+}
+
+impl DemRequest {
+    /// Latitude of the centres of row `row` (fractional rows allowed).
+    pub fn lat_of(&self, row: f64) -> f64 {
+        let b = &self.bounds;
+        let t = (row + 0.5) / f64::from(self.height);
+        match self.rows {
+            Rows::Degrees => b.north - t * (b.north - b.south),
+            Rows::Mercator => {
+                let (n, s) = (mercator_y(b.north), mercator_y(b.south));
+                mercator_lat(n - t * (n - s))
+            }
+        }
+    }
+
+    /// The fractional row whose centre lies at latitude `lat` (the inverse of [`Self::lat_of`]).
+    pub fn row_of(&self, lat: f64) -> f64 {
+        let b = &self.bounds;
+        let h = f64::from(self.height);
+        match self.rows {
+            Rows::Degrees => (b.north - lat) / (b.north - b.south) * h - 0.5,
+            Rows::Mercator => {
+                let (n, s) = (mercator_y(b.north), mercator_y(b.south));
+                let lat = lat.clamp(-89.999_999, 89.999_999);
+                (n - mercator_y(lat)) / (n - s) * h - 0.5
+            }
+        }
+    }
 }
 
 /// Why a request is refused: the field at fault and what is wrong.
@@ -90,7 +140,7 @@ impl DemRequest {
             let field = if pixels / u64::from(height) > 0 && height > width { "height" } else { "width" };
             return Err(refuse(field, format!("{width}x{height} is {pixels} cells; at most {max_pixels} are served")));
         }
-        Ok(DemRequest { bounds, width, height })
+        Ok(DemRequest { bounds, width, height, rows: Rows::Degrees })
     }
 
     /// Cell size in degrees (longitude, latitude).
@@ -177,8 +227,8 @@ fn sample_block(
     let rect = GeoBounds {
         west: b.west + f64::from(col0) * dx,
         east: b.west + f64::from(col0 + cols) * dx,
-        north: b.north - f64::from(row0) * dy,
-        south: b.north - f64::from(row0 + rows) * dy,
+        north: req.lat_of(f64::from(row0) - 0.5),
+        south: req.lat_of(f64::from(row0 + rows) - 0.5),
     };
     let r = params.radius_m;
     let region = Region::new(rect);
@@ -195,7 +245,11 @@ fn sample_block(
         // node's cells are narrowest (a function of the node and the cell size alone, so that
         // overlapping requests on one grid refine alike, whatever their blocks).
         let polar = u.iter().map(|x| x.z.abs()).fold(0.0, f64::max).min(1.0);
-        let (ns, ew) = (dy.to_radians() * r, dx.to_radians() * r * (1.0 - polar * polar).sqrt());
+        let ew = dx.to_radians() * r * (1.0 - polar * polar).sqrt();
+        let ns = match req.rows {
+            Rows::Degrees => dy.to_radians() * r,
+            Rows::Mercator => ew, // square cells
+        };
         let target = ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m);
         if !tree.splits_edge(node[1], node[2]) && u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target {
             continue;
@@ -215,7 +269,7 @@ fn sample_block(
     let mut water = vec![f32::NAN; n];
     let mut owned = vec![false; n];
     let sea = params.sea_level_m;
-    let lats: Vec<f64> = (0..rows).map(|i| b.lat_of(row0 + i, req.height)).collect();
+    let lats: Vec<f64> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i))).collect();
     let lons: Vec<f64> = (0..cols).map(|i| b.lon_of(col0 + i, req.width)).collect();
     let dirs: Vec<DVec3> = lats.iter().flat_map(|&la| lons.iter().map(move |&lo| direction(la, lo))).collect();
     // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
@@ -265,8 +319,8 @@ fn sample_block(
         } else {
             triangle_bounds(u, &n)
         };
-        let r0 = (((rect.north - hi - EPS) / dy - 0.5).ceil().max(0.0)) as u32;
-        let r1 = ((rect.north - lo + EPS) / dy - 0.5).floor();
+        let r0 = ((req.row_of(hi + EPS) - f64::from(row0)).ceil().max(0.0)) as u32;
+        let r1 = (req.row_of(lo - EPS) - f64::from(row0)).floor();
         if r1 < f64::from(r0) {
             continue;
         }

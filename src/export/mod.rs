@@ -13,6 +13,7 @@ pub mod geojson;
 pub mod glb;
 pub mod preview;
 pub mod raster;
+pub mod terrain_rgb;
 pub mod tiles;
 pub mod view;
 pub mod water;

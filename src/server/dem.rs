@@ -1,6 +1,8 @@
 //! `GET /v1/planets/{id}/dem.tif?bbox=W,S,E,N&width=W[&height=H]`: a DEM of any region
-//! (`export::dem`), sampled from the planet's tiling (the bisection tree behind its mesh, cached
-//! beside the planet by `tiles.rs`), cached and immutable like the other derived files.
+//! (`export::dem`), and the elevation tiles of MapLibre's `raster-dem` sources
+//! (`export::terrain_rgb`): `dem/tilejson.json` and `dem/{z}/{x}/{y}.png`. All are sampled from
+//! the planet's tiling (the bisection tree behind its mesh, cached beside the planet by
+//! `tiles.rs`), cached and immutable like the other derived files.
 //!
 //! The query is checked before anything else: every key once (a second one answers 422 naming
 //! it), values percent-decoded, no other keys; `bbox` inside -180..180 / -90..90 and not empty,
@@ -12,10 +14,23 @@ use super::state::AppState;
 use super::tiles::{planet_entry, tiling};
 use crate::adapt::camera::percent_decode;
 use crate::export::dem::{dem_tiff, DemRequest, MAX_DEM_SIDE};
+use crate::export::terrain_rgb::{self, Encoding, TileError, MAX_ZOOM};
 use axum::extract::{Path, RawQuery, State};
 use axum::http::HeaderMap;
 use axum::response::Response;
 use std::sync::Arc;
+
+/// Fills a query key's slot, or a 422 naming the key when it is given twice.
+fn set_once<T>(slot: &mut Option<T>, key: &str, value: T) -> Result<(), ApiError> {
+    match slot.replace(value) {
+        None => Ok(()),
+        Some(_) => Err(ApiError::unprocessable(
+            "duplicate_parameter",
+            key,
+            format!("query parameter {key:?} is given more than once"),
+        )),
+    }
+}
 
 /// Parses and checks a `dem.tif` query.
 pub fn parse_query(query: &str, max_pixels: u64) -> Result<DemRequest, ApiError> {
@@ -29,13 +44,7 @@ pub fn parse_query(query: &str, max_pixels: u64) -> Result<DemRequest, ApiError>
             "height" => &mut height,
             _ => return Err(unknown_key(k, "bbox, width, height")),
         };
-        if slot.replace(v).is_some() {
-            return Err(ApiError::unprocessable(
-                "duplicate_parameter",
-                k,
-                format!("query parameter {k:?} is given more than once"),
-            ));
-        }
+        set_once(slot, k, v)?;
     }
     let missing = |k: &str| ApiError::unprocessable("missing_parameter", k, format!("{k} is required"));
     let bbox = bbox.ok_or_else(|| missing("bbox"))?;
@@ -61,6 +70,96 @@ pub async fn dem(
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
         Ok(dem_tiff(&tiling.dem(&req)))
+    })
+    .await
+}
+
+/// The `encoding` of an elevation tile's query: each key once, no other keys.
+fn parse_encoding(query: &str) -> Result<Encoding, ApiError> {
+    let mut encoding = None;
+    for pair in query.split(['&', ';']).filter(|p| !p.is_empty()) {
+        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+        if k != "encoding" {
+            return Err(unknown_key(k, "encoding"));
+        }
+        let v = percent_decode(v);
+        let e = Encoding::parse(&v).ok_or_else(|| {
+            ApiError::unprocessable("invalid_parameter", "encoding", format!("{v:?}: expected terrarium or mapbox"))
+        })?;
+        set_once(&mut encoding, k, e)?;
+    }
+    Ok(encoding.unwrap_or(Encoding::Terrarium))
+}
+
+/// Where the tiles are, as the client reached this server: `{scheme}://{host}` from the `Host`
+/// (and `X-Forwarded-Proto`) headers when they are plain, else an absolute path.
+fn origin(headers: &HeaderMap) -> String {
+    let plain = |s: &str, extra: &str| {
+        !s.is_empty() && s.len() <= 255 && s.chars().all(|c| c.is_ascii_alphanumeric() || extra.contains(c))
+    };
+    let host = headers.get(axum::http::header::HOST).and_then(|h| h.to_str().ok()).filter(|h| plain(h, ".-:[]"));
+    let scheme = headers
+        .get("x-forwarded-proto")
+        .and_then(|h| h.to_str().ok())
+        .filter(|s| *s == "https" || *s == "http")
+        .unwrap_or("http");
+    host.map(|h| format!("{scheme}://{h}")).unwrap_or_default()
+}
+
+/// `GET /v1/planets/{id}/dem/tilejson.json[?encoding=mapbox]`.
+pub async fn tilejson(
+    State(state): State<Arc<AppState>>,
+    Path(id): Path<String>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, ApiError> {
+    let entry = planet_entry(&state, &id).await?;
+    let encoding = parse_encoding(query.as_deref().unwrap_or(""))?;
+    let base = format!("{}/v1/planets/{id}/dem", origin(&headers));
+    let norm = format!("encoding={}&base={base}", encoding.name());
+    let derived = Derived { route: "dem/tilejson.json".into(), norm, content_type: "application/json" };
+    cached(state, entry, derived, headers, move |_| Ok(terrain_rgb::tilejson(&id, &base, encoding).into_bytes())).await
+}
+
+/// `GET /v1/planets/{id}/dem/{z}/{x}/{y}.png[?encoding=mapbox]`.
+pub async fn tile(
+    State(state): State<Arc<AppState>>,
+    Path((id, z, x, file)): Path<(String, String, String, String)>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, ApiError> {
+    let entry = planet_entry(&state, &id).await?;
+    let malformed = || {
+        ApiError::unprocessable(
+            "invalid_tile",
+            "tile",
+            format!("{z}/{x}/{file:?} is no tile: expected whole numbers z/x/y and .png"),
+        )
+    };
+    let number = |s: &str| {
+        if s.len() <= 10 && !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) {
+            s.parse::<u32>().ok()
+        } else {
+            None
+        }
+    };
+    let y = file.strip_suffix(".png").and_then(number).ok_or_else(malformed)?;
+    let (z, x) = (number(&z).ok_or_else(malformed)?, number(&x).ok_or_else(malformed)?);
+    let encoding = parse_encoding(query.as_deref().unwrap_or(""))?;
+    let zoom = u8::try_from(z).unwrap_or(u8::MAX);
+    terrain_rgb::tile_bounds(zoom, x, y).map_err(|e| match e {
+        TileError::TooDeep => ApiError::not_found(&format!("tile {z}/{x}/{y} (the deepest zoom is {MAX_ZOOM})")),
+        TileError::Outside => ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below 2^z)")),
+    })?;
+    let derived = Derived {
+        route: format!("dem/{z}/{x}/{y}.png"),
+        norm: format!("encoding={}", encoding.name()),
+        content_type: "image/png",
+    };
+    let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
+    cached(state, entry, derived, headers, move |planet| {
+        let tiling = tiling(&shared, &owner, planet);
+        terrain_rgb::dem_tile_png(&tiling, zoom, x, y, encoding).map_err(|_| ApiError::internal("tile checked"))
     })
     .await
 }

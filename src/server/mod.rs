@@ -285,6 +285,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/preview.png", get(resources::preview))
         .route("/v1/planets/{id}/elevation.tif", get(resources::elevation))
         .route("/v1/planets/{id}/dem.tif", get(dem::dem))
+        .route("/v1/planets/{id}/dem/tilejson.json", get(dem::tilejson))
+        .route("/v1/planets/{id}/dem/{z}/{x}/{file}", get(dem::tile))
         .route("/v1/planets/{id}/render.png", get(snapshot::png))
         .route("/v1/planets/{id}/render.jpg", get(snapshot::jpeg))
         .route("/v1/planets/{id}/tileset.json", get(tiles::tileset))
