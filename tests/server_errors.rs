@@ -73,6 +73,8 @@ async fn bad_requests_name_their_problem() {
         ("eye=0,0,2e7&target=0,0,0&zoom=2", "unknown_parameter", "zoom"),
         ("eye=0,0,2e7&target=0,0,0&max_faces=0", "invalid_parameter", "max_faces"),
         ("eye=0,0,2e7&target=0,0,0&max_faces=2000001", "invalid_parameter", "max_faces"),
+        ("eye=0,0,2e7&target=0,0,0&eye=0,0,3e7", "invalid_camera", "eye"),
+        ("eye=0,0,2e7&target=0,0,0&max_faces=9000&max_faces=9000", "invalid_camera", "max_faces"),
     ] {
         let err = expect_error(s.get(&format!("{view}?{query}")).await, 422, code).await;
         assert_eq!(err["field"], field, "{query}");
@@ -96,6 +98,10 @@ async fn bad_requests_name_their_problem() {
         (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=rgb"), "invalid_parameter", "encoding"),
         (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=mapbox&encoding=mapbox"), "duplicate_parameter", "encoding"),
         (format!("/v1/planets/{id}/dem/tilejson.json?format=png"), "unknown_parameter", "format"),
+        (format!("/v1/planets/{id}/elevation.tif?width=64&width=128"), "duplicate_parameter", "width"),
+        (format!("/v1/planets/{id}/tileset.json?v=1"), "unknown_parameter", "v"),
+        (format!("/v1/planets/{id}/tiles/0.glb?v=1"), "unknown_parameter", "v"),
+        (format!("/v1/planets/{id}?fields=all"), "unknown_parameter", "fields"),
     ] {
         let err = expect_error(s.get(&path).await, 422, code).await;
         assert_eq!(err["field"], field, "{path}");

@@ -94,8 +94,18 @@ impl Camera {
         let (mut eye, mut target, mut up, mut fov, mut width, mut height) = (None, None, None, 60.0, 1920, 1080);
         let (mut land_px, mut water_px) = (DEFAULT_LAND_PX, DEFAULT_WATER_PX);
         let mut rest = Vec::new();
+        let mut seen: Vec<&str> = Vec::new();
         for pair in query.trim_start_matches('?').split(['&', ';']).filter(|p| !p.is_empty()) {
             let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+            if seen.contains(&k) {
+                // Keys the camera and its callers know are named; others were refused anyway.
+                const KEYS: [&str; 10] =
+                    ["eye", "target", "up", "fov", "width", "height", "land_px", "water_px", "max_faces", "sun"];
+                let field = KEYS.iter().find(|&&n| n == k).copied().unwrap_or("query");
+                let shown: String = k.chars().take(40).collect();
+                return Err(err(field, format!("{shown:?} is given more than once")));
+            }
+            seen.push(k);
             let v = percent_decode(v);
             match k {
                 "eye" => eye = Some(vec3("eye", &v)?),

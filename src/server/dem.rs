@@ -9,7 +9,7 @@
 //! `width` and `height` in 1..=8192 and at most `--max-dem-pixels` cells, or 422 naming the field.
 
 use super::error::ApiError;
-use super::resources::{cached, unknown_key, whole_number_in, Derived};
+use super::resources::{cached, set_once, unknown_key, whole_number_in, Derived};
 use super::state::AppState;
 use super::tiles::{planet_entry, tiling};
 use crate::adapt::camera::percent_decode;
@@ -19,18 +19,6 @@ use axum::extract::{Path, RawQuery, State};
 use axum::http::HeaderMap;
 use axum::response::Response;
 use std::sync::Arc;
-
-/// Fills a query key's slot, or a 422 naming the key when it is given twice.
-fn set_once<T>(slot: &mut Option<T>, key: &str, value: T) -> Result<(), ApiError> {
-    match slot.replace(value) {
-        None => Ok(()),
-        Some(_) => Err(ApiError::unprocessable(
-            "duplicate_parameter",
-            key,
-            format!("query parameter {key:?} is given more than once"),
-        )),
-    }
-}
 
 /// Parses and checks a `dem.tif` query.
 pub fn parse_query(query: &str, max_pixels: u64) -> Result<DemRequest, ApiError> {

@@ -5,7 +5,7 @@ use super::input::{self, planet_id};
 use super::state::{queue_full, AppState, Entry, EARTH_ID};
 use crate::maps::MapLimits;
 use axum::body::Body;
-use axum::extract::{Path, State};
+use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderValue, Request, StatusCode};
 use axum::response::{IntoResponse, Response};
 use std::sync::Arc;
@@ -72,8 +72,13 @@ pub async fn list(State(state): State<Arc<AppState>>) -> Result<Response, ApiErr
 }
 
 /// `GET /v1/planets/{id}`: the record; starts the build of a planet that is not built.
-pub async fn read(State(state): State<Arc<AppState>>, Path(id): Path<String>) -> Result<Response, ApiError> {
+pub async fn read(
+    State(state): State<Arc<AppState>>,
+    Path(id): Path<String>,
+    RawQuery(query): RawQuery,
+) -> Result<Response, ApiError> {
     let entry = state.lookup_confirmed(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
+    super::resources::no_query(query.as_deref())?;
     // A full queue only delays the build: the next read tries again.
     let _ = state.ensure_build(&entry);
     Ok(json(StatusCode::OK, &state.record(&entry)))

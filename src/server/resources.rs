@@ -75,7 +75,28 @@ enum Job {
 }
 
 pub fn unknown_key(key: &str, allowed: &str) -> ApiError {
-    ApiError::unprocessable("unknown_parameter", key, format!("unknown query parameter {key:?}; allowed: {allowed}"))
+    let key = super::error::cut(key);
+    ApiError::unprocessable("unknown_parameter", &key, format!("unknown query parameter {key:?}; allowed: {allowed}"))
+}
+
+/// Refuses any query key, for routes that take none (422 `unknown_parameter` naming the first).
+pub fn no_query(query: Option<&str>) -> Result<(), ApiError> {
+    match pairs(query.unwrap_or("")).next() {
+        Some((k, _)) => Err(unknown_key(k, "none")),
+        None => Ok(()),
+    }
+}
+
+/// Fills a query key's slot, or a 422 naming the key when it is given twice.
+pub fn set_once<T>(slot: &mut Option<T>, key: &str, value: T) -> Result<(), ApiError> {
+    match slot.replace(value) {
+        None => Ok(()),
+        Some(_) => Err(ApiError::unprocessable(
+            "duplicate_parameter",
+            key,
+            format!("query parameter {key:?} is given more than once"),
+        )),
+    }
 }
 
 /// Parses the query of `res` into the work to do and its normal form (the cache key).
@@ -95,18 +116,20 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
             let norm = budget_query(cam.to_query(), max_faces, max_faces_cap);
             Ok((Job::View { cam, max_faces }, norm))
         }
-        Resource::Rivers => match pairs(query).next() {
-            Some((k, _)) => Err(unknown_key(k, "none")),
-            None => Ok((Job::Rivers, String::new())),
-        },
+        Resource::Rivers => {
+            no_query(Some(query))?;
+            Ok((Job::Rivers, String::new()))
+        }
         _ => {
-            let mut width = DEFAULT_RASTER_WIDTH.min(caps.max_raster_width);
+            let mut asked = None;
             for (k, v) in pairs(query) {
                 if k != "width" {
                     return Err(unknown_key(k, "width"));
                 }
-                width = whole_number_in("width", v, 2, caps.max_raster_width)?;
+                let v = crate::adapt::camera::percent_decode(v);
+                set_once(&mut asked, k, whole_number_in("width", &v, 2, caps.max_raster_width)?)?;
             }
+            let width = asked.unwrap_or(DEFAULT_RASTER_WIDTH.min(caps.max_raster_width));
             Ok((Job::Raster { width }, format!("width={width}")))
         }
     }

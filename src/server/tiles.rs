@@ -9,12 +9,12 @@
 //! planet's deepest level, or `.json` for a tile that starts no external tileset, answers 404.
 
 use super::error::ApiError;
-use super::resources::{cache_key, cached, Derived};
+use super::resources::{cache_key, cached, no_query, Derived};
 use super::state::{AppState, Cached, Entry};
 use crate::build::Planet;
 use crate::export::tiles::{self, is_subtree_root, KeyError, PlanetTiles, TileFile, TileKey};
 use axum::body::Bytes;
-use axum::extract::{Path, State};
+use axum::extract::{Path, RawQuery, State};
 use axum::http::HeaderMap;
 use axum::response::Response;
 use std::sync::Arc;
@@ -26,8 +26,14 @@ pub(super) async fn planet_entry(state: &AppState, id: &str) -> Result<Arc<Entry
 }
 
 /// `GET /v1/planets/{id}/tileset.json`.
-pub async fn tileset(State(state): State<Arc<AppState>>, Path(id): Path<String>, headers: HeaderMap) -> Answer {
+pub async fn tileset(
+    State(state): State<Arc<AppState>>,
+    Path(id): Path<String>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Answer {
     let entry = planet_entry(&state, &id).await?;
+    no_query(query.as_deref())?;
     let derived = Derived { route: "tileset.json".into(), norm: String::new(), content_type: "application/json" };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
@@ -43,9 +49,11 @@ pub async fn tileset(State(state): State<Arc<AppState>>, Path(id): Path<String>,
 pub async fn tile(
     State(state): State<Arc<AppState>>,
     Path((id, name)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Answer {
     let entry = planet_entry(&state, &id).await?;
+    no_query(query.as_deref())?;
     let max_level = tiles::max_level(&entry.input.params);
     let file = TileFile::parse(&name, max_level).map_err(|e| match e {
         KeyError::Malformed => ApiError::unprocessable(
