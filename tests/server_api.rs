@@ -268,7 +268,8 @@ async fn a_full_queue_answers_429_and_stores_nothing() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn builtin_earth_becomes_ready_and_cannot_be_deleted() {
-    let cfg = riverworld::server::Config { default_planet: true, ..config(&scratch("earth")) };
+    // A cache far smaller than earth: the built-in planet is pinned, so uploads cannot evict it.
+    let cfg = riverworld::server::Config { default_planet: true, cache_bytes: 1 << 20, ..config(&scratch("earth")) };
     let s = start(cfg).await;
     assert_eq!(s.get("/healthz").await.status().as_u16(), 200);
     let start = std::time::Instant::now();
@@ -291,6 +292,14 @@ async fn builtin_earth_becomes_ready_and_cannot_be_deleted() {
     err.await;
     let res = s.get("/v1/planets/earth/landmask.png?width=64").await;
     assert_eq!(res.status().as_u16(), 200);
+    let other = created_id(s.post_json(r#"{"seed": 5, "params": {"base_faces": 2000}}"#).await).await;
+    s.wait_ready(&other).await;
+    let builds = |m: String| m.lines().find(|l| l.starts_with("riverworld_builds_finished_total")).map(str::to_string);
+    let before = builds(s.get("/metrics").await.text().await.unwrap());
+    let res = s.get("/v1/planets/earth/landmask.png?width=32").await;
+    assert_eq!(res.status().as_u16(), 200, "earth answers at once, without a rebuild");
+    assert_eq!(s.get("/readyz").await.status().as_u16(), 200);
+    assert_eq!(builds(s.get("/metrics").await.text().await.unwrap()), before);
     let yaml = s.get("/openapi.yaml").await;
     assert_eq!(yaml.headers()["content-type"], "application/yaml");
     assert!(yaml.text().await.unwrap().starts_with("openapi: 3.1"));

@@ -3,6 +3,7 @@
 //! Every entry carries its weight in bytes; inserting evicts the least recently used entries
 //! until the total fits the budget, but never the entry just inserted, so a single planet larger
 //! than the whole budget can still be served (it is the first to go when anything else arrives).
+//! Pinned keys (the built-in planet) are never evicted; their bytes count against the budget.
 
 use std::collections::HashMap;
 use std::sync::Mutex;
@@ -17,6 +18,8 @@ struct Inner<V> {
     map: HashMap<String, Slot<V>>,
     total: usize,
     tick: u64,
+    /// Keys never evicted (still removed by [`ByteLru::remove_prefix`]).
+    pinned: Vec<String>,
 }
 
 /// Byte-bounded LRU map from string keys to cheaply clonable values.
@@ -27,7 +30,15 @@ pub struct ByteLru<V> {
 
 impl<V: Clone> ByteLru<V> {
     pub fn new(budget: usize) -> ByteLru<V> {
-        ByteLru { budget, inner: Mutex::new(Inner { map: HashMap::new(), total: 0, tick: 0 }) }
+        ByteLru { budget, inner: Mutex::new(Inner { map: HashMap::new(), total: 0, tick: 0, pinned: Vec::new() }) }
+    }
+
+    /// Never evicts `key` (whether cached yet or not).
+    pub fn pin(&self, key: &str) {
+        let mut inner = self.inner.lock().expect("cache lock");
+        if !inner.pinned.iter().any(|k| k == key) {
+            inner.pinned.push(key.to_string());
+        }
     }
 
     /// The value under `key`, marking it most recently used.
@@ -55,14 +66,14 @@ impl<V: Clone> ByteLru<V> {
             inner.total -= old.bytes;
         }
         inner.total += bytes;
-        while inner.total > self.budget && inner.map.len() > 1 {
+        while inner.total > self.budget {
             let oldest = inner
                 .map
                 .iter()
-                .filter(|(k, _)| **k != key)
+                .filter(|(k, _)| **k != key && !inner.pinned.contains(k))
                 .min_by_key(|(_, s)| s.used)
-                .map(|(k, _)| k.clone())
-                .expect("another entry exists");
+                .map(|(k, _)| k.clone());
+            let Some(oldest) = oldest else { break };
             let gone = inner.map.remove(&oldest).expect("present");
             inner.total -= gone.bytes;
         }
@@ -102,5 +113,20 @@ mod tests {
         c.insert("p/1".into(), 5, 1);
         c.remove_prefix("p/");
         assert!(!c.contains("p/1"));
+    }
+
+    #[test]
+    fn pinned_entries_stay() {
+        let c: ByteLru<u32> = ByteLru::new(100);
+        c.pin("earth");
+        c.insert("earth".into(), 1, 60);
+        for i in 0..10 {
+            c.insert(format!("upload{i}"), i, 60);
+        }
+        assert!(c.contains("earth"), "the pinned entry survives newer, larger ones");
+        assert!(c.contains("upload9") && !c.contains("upload8"));
+        assert_eq!(c.bytes(), 120);
+        c.remove_prefix("earth");
+        assert!(!c.contains("earth"));
     }
 }

@@ -204,6 +204,8 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     if state.config.default_planet {
         let earth = Arc::new(earth_entry());
         state.planets.write().expect("planets lock").insert(EARTH_ID.to_string(), Arc::clone(&earth));
+        // Pinned: uploads can never evict the built-in planet and queue its rebuild.
+        state.cache.pin(&state::planet_key(EARTH_ID));
         state.start_default_build(&earth);
     }
     let app = router(Arc::clone(&state))?;
@@ -339,8 +341,11 @@ async fn healthz() -> Response {
     plain("application/json", r#"{"status":"ok"}"#)
 }
 
+/// Ready once the built-in planet is built and held (it is pinned in the cache, so it stays);
+/// without a built-in planet, once the server listens.
 async fn readyz(State(state): State<Arc<AppState>>) -> Result<Response, ApiError> {
-    if state.ready.load(Ordering::SeqCst) {
+    let held = !state.config.default_planet || state.cache.contains(&state::planet_key(EARTH_ID));
+    if state.ready.load(Ordering::SeqCst) && held {
         Ok(plain("application/json", r#"{"status":"ready"}"#))
     } else {
         Err(ApiError::new(StatusCode::SERVICE_UNAVAILABLE, "not_ready", "the built-in planet is still building")
