@@ -48,6 +48,14 @@ pub struct CameraError {
     pub message: String,
 }
 
+/// A query value as errors show it: at most 200 characters, marked where cut.
+fn shown(s: &str) -> String {
+    match s.char_indices().nth(200) {
+        Some((at, _)) => format!("{}…", &s[..at]),
+        None => s.to_string(),
+    }
+}
+
 fn err(field: &'static str, message: impl Into<String>) -> CameraError {
     CameraError { field, message: message.into() }
 }
@@ -55,7 +63,7 @@ fn err(field: &'static str, message: impl Into<String>) -> CameraError {
 fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 3 {
-        return Err(err(field, format!("expected X,Y,Z, got {s:?}")));
+        return Err(err(field, format!("expected X,Y,Z, got {:?}", shown(s))));
     }
     let mut v = [0.0; 3];
     for (i, p) in parts.iter().enumerate() {
@@ -73,8 +81,8 @@ fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
 /// "... is not a number", with a hint where a `+` of an exponent was decoded as a space.
 fn not_a_number(s: &str) -> String {
     match s.trim().contains(' ') {
-        true => format!("{s:?} is not a number (a query decodes + as a space: write it %2B, or leave it out)"),
-        false => format!("{s:?} is not a number"),
+        true => format!("{:?} is not a number (a query decodes + as a space: write it %2B, or leave it out)", shown(s)),
+        false => format!("{:?} is not a number", shown(s)),
     }
 }
 
@@ -83,7 +91,7 @@ fn number(field: &'static str, s: &str) -> Result<f64, CameraError> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(err(field, format!("{s:?} is not finite")))
+        Err(err(field, format!("{:?} is not finite", shown(s))))
     }
 }
 
@@ -233,8 +241,10 @@ fn default_up(eye: DVec3, fwd: DVec3) -> DVec3 {
 
 fn size(field: &'static str, s: &str) -> Result<u32, CameraError> {
     s.trim().parse::<u32>().map_err(|e| match e.kind() {
-        std::num::IntErrorKind::PosOverflow => err(field, format!("must be in 1..={MAX_SIDE}, got {}", s.trim())),
-        _ => err(field, format!("{s:?} is not a whole number of pixels")),
+        std::num::IntErrorKind::PosOverflow => {
+            err(field, format!("must be in 1..={MAX_SIDE}, got {}", shown(s.trim())))
+        }
+        _ => err(field, format!("{:?} is not a whole number of pixels", shown(s))),
     })
 }
 
@@ -415,6 +425,12 @@ mod tests {
             let e = Camera::parse_query(q, R).unwrap_err().to_string();
             assert!(e.contains(needle), "{q}: {e}");
         }
+        // Inputs of any size come back cut, and a key given twice is named.
+        let long = format!("eye={}&target=0,0,0", "9".repeat(60_000));
+        let e = Camera::parse_query(&long, R).unwrap_err().to_string();
+        assert!(e.len() < 400 && e.contains('…'), "{} bytes", e.len());
+        let e = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=50&fov=60", R).unwrap_err();
+        assert_eq!(e.field, "fov");
         assert!(Camera::parse_query("eye=6.4e%2B6,0,0&target=0,0,0", R).is_ok());
         // Only two hex digits make an escape.
         assert_eq!(percent_decode("a%+5b%2C%zz%4"), "a% 5b,%zz%4");
