@@ -17,6 +17,7 @@ pub mod geo;
 pub mod maps;
 pub mod mesh;
 pub mod params;
+pub mod query;
 #[cfg(feature = "service")]
 pub mod render;
 pub mod rng;

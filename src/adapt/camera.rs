@@ -11,6 +11,7 @@
 //! slow-down outside the frustum uses how far that ball lies outside the frustum planes (and
 //! behind the eye), and back-face culling drops balls entirely behind the planet's horizon.
 
+use crate::query::{cut, pairs, percent_decode};
 use glam::DVec3;
 
 /// Paper's constant for the level-of-detail falloff outside the frustum (eq. 6).
@@ -48,14 +49,6 @@ pub struct CameraError {
     pub message: String,
 }
 
-/// A query value as errors show it: at most 200 characters, marked where cut.
-fn shown(s: &str) -> String {
-    match s.char_indices().nth(200) {
-        Some((at, _)) => format!("{}…", &s[..at]),
-        None => s.to_string(),
-    }
-}
-
 fn err(field: &'static str, message: impl Into<String>) -> CameraError {
     CameraError { field, message: message.into() }
 }
@@ -63,7 +56,7 @@ fn err(field: &'static str, message: impl Into<String>) -> CameraError {
 fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 3 {
-        return Err(err(field, format!("expected X,Y,Z, got {:?}", shown(s))));
+        return Err(err(field, format!("expected X,Y,Z, got {:?}", cut(s))));
     }
     let mut v = [0.0; 3];
     for (i, p) in parts.iter().enumerate() {
@@ -81,8 +74,8 @@ fn vec3(field: &'static str, s: &str) -> Result<DVec3, CameraError> {
 /// "... is not a number", with a hint where a `+` of an exponent was decoded as a space.
 fn not_a_number(s: &str) -> String {
     match s.trim().contains(' ') {
-        true => format!("{:?} is not a number (a query decodes + as a space: write it %2B, or leave it out)", shown(s)),
-        false => format!("{:?} is not a number", shown(s)),
+        true => format!("{:?} is not a number (a query decodes + as a space: write it %2B, or leave it out)", cut(s)),
+        false => format!("{:?} is not a number", cut(s)),
     }
 }
 
@@ -91,7 +84,7 @@ fn number(field: &'static str, s: &str) -> Result<f64, CameraError> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(err(field, format!("{:?} is not finite", shown(s))))
+        Err(err(field, format!("{:?} is not finite", cut(s))))
     }
 }
 
@@ -103,8 +96,7 @@ impl Camera {
         let (mut land_px, mut water_px) = (DEFAULT_LAND_PX, DEFAULT_WATER_PX);
         let mut rest = Vec::new();
         let mut seen: Vec<&str> = Vec::new();
-        for pair in query.trim_start_matches('?').split(['&', ';']).filter(|p| !p.is_empty()) {
-            let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+        for (k, v) in pairs(query.trim_start_matches('?')) {
             if seen.contains(&k) {
                 // Keys the camera and its callers know are named; others were refused anyway.
                 const KEYS: [&str; 10] =
@@ -241,32 +233,9 @@ fn default_up(eye: DVec3, fwd: DVec3) -> DVec3 {
 
 fn size(field: &'static str, s: &str) -> Result<u32, CameraError> {
     s.trim().parse::<u32>().map_err(|e| match e.kind() {
-        std::num::IntErrorKind::PosOverflow => {
-            err(field, format!("must be in 1..={MAX_SIDE}, got {}", shown(s.trim())))
-        }
-        _ => err(field, format!("{:?} is not a whole number of pixels", shown(s))),
+        std::num::IntErrorKind::PosOverflow => err(field, format!("must be in 1..={MAX_SIDE}, got {}", cut(s.trim()))),
+        _ => err(field, format!("{:?} is not a whole number of pixels", cut(s))),
     })
-}
-
-/// Decodes `%XX` escapes and `+` (as space) in a query value.
-pub fn percent_decode(s: &str) -> String {
-    let bytes = s.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'%' if i + 2 < bytes.len() && bytes[i + 1..i + 3].iter().all(u8::is_ascii_hexdigit) => {
-                let hex = std::str::from_utf8(&bytes[i + 1..i + 3]).expect("hex digits");
-                out.push(u8::from_str_radix(hex, 16).expect("hex digits"));
-                i += 3;
-                continue;
-            }
-            b'+' => out.push(b' '),
-            b => out.push(b),
-        }
-        i += 1;
-    }
-    String::from_utf8_lossy(&out).into_owned()
 }
 
 /// Everything the state update needs from a camera, precomputed once per adaption.
@@ -432,8 +401,6 @@ mod tests {
         let e = Camera::parse_query("eye=0,0,2e7&target=0,0,0&fov=50&fov=60", R).unwrap_err();
         assert_eq!(e.field, "fov");
         assert!(Camera::parse_query("eye=6.4e%2B6,0,0&target=0,0,0", R).is_ok());
-        // Only two hex digits make an escape.
-        assert_eq!(percent_decode("a%+5b%2C%zz%4"), "a% 5b,%zz%4");
     }
 
     #[test]

@@ -12,9 +12,9 @@ use super::error::ApiError;
 use super::resources::{cached, set_once, unknown_key, whole_number_in, Derived};
 use super::state::AppState;
 use super::tiles::{planet_entry, tiling};
-use crate::adapt::camera::percent_decode;
 use crate::export::dem::{dem_tiff, DemRequest, MAX_DEM_SIDE};
 use crate::export::terrain_rgb::{self, Encoding, TileError, MAX_ZOOM};
+use crate::query::{pairs, percent_decode};
 use axum::extract::{Path, RawQuery, State};
 use axum::http::HeaderMap;
 use axum::response::Response;
@@ -23,8 +23,7 @@ use std::sync::Arc;
 /// Parses and checks a `dem.tif` query.
 pub fn parse_query(query: &str, max_pixels: u64) -> Result<DemRequest, ApiError> {
     let (mut bbox, mut width, mut height) = (None, None, None);
-    for pair in query.split(['&', ';']).filter(|p| !p.is_empty()) {
-        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+    for (k, v) in pairs(query) {
         let v = percent_decode(v);
         let slot = match k {
             "bbox" => &mut bbox,
@@ -65,8 +64,7 @@ pub async fn dem(
 /// The `encoding` of an elevation tile's query: each key once, no other keys.
 fn parse_encoding(query: &str) -> Result<Encoding, ApiError> {
     let mut encoding = None;
-    for pair in query.split(['&', ';']).filter(|p| !p.is_empty()) {
-        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+    for (k, v) in pairs(query) {
         if k != "encoding" {
             return Err(unknown_key(k, "encoding"));
         }

@@ -139,11 +139,3 @@ pub async fn json_errors(req: Request<Body>, next: Next) -> Response {
     }
     Response::from_parts(parts, fresh.into_body())
 }
-
-/// An input as error messages and logs show it: at most 200 characters, marked where cut.
-pub fn cut(s: &str) -> String {
-    match s.char_indices().nth(200) {
-        Some((at, _)) => format!("{}…", &s[..at]),
-        None => s.to_string(),
-    }
-}

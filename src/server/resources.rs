@@ -15,6 +15,7 @@ use crate::adapt::{Adapter, Camera};
 use crate::build::Planet;
 use crate::export;
 use crate::params::Params;
+use crate::query::{pairs, percent_decode};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
@@ -75,7 +76,7 @@ enum Job {
 }
 
 pub fn unknown_key(key: &str, allowed: &str) -> ApiError {
-    let key = super::error::cut(key);
+    let key = crate::query::cut(key);
     ApiError::unprocessable("unknown_parameter", &key, format!("unknown query parameter {key:?}; allowed: {allowed}"))
 }
 
@@ -126,17 +127,13 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
                 if k != "width" {
                     return Err(unknown_key(k, "width"));
                 }
-                let v = crate::adapt::camera::percent_decode(v);
+                let v = percent_decode(v);
                 set_once(&mut asked, k, whole_number_in("width", &v, 2, caps.max_raster_width)?)?;
             }
             let width = asked.unwrap_or(DEFAULT_RASTER_WIDTH.min(caps.max_raster_width));
             Ok((Job::Raster { width }, format!("width={width}")))
         }
     }
-}
-
-fn pairs(query: &str) -> impl Iterator<Item = (&str, &str)> {
-    query.split(['&', ';']).filter(|p| !p.is_empty()).map(|p| p.split_once('=').unwrap_or((p, "")))
 }
 
 /// The normal form of a view's query: the camera's, then `max_faces` as the query gave it or,
