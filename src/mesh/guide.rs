@@ -16,6 +16,7 @@
 
 use crate::maps::{Map, MapKind};
 use glam::DVec3;
+use rayon::prelude::*;
 
 /// Most cells along a face's side.
 pub const MAX_SIDE: u32 = 1024;
@@ -129,17 +130,17 @@ impl Guide {
             };
             (vec![face], side)
         };
-        let values: Vec<f32> = faces
-            .iter()
-            .flat_map(|f| {
-                (0..side * side).map(move |i| {
-                    let (col, row) = (i % side, i / side);
-                    let x = f.x0 + (f64::from(col) + 0.5) * f.step;
-                    let y = f.y0 + (f64::from(row) + 0.5) * f.step;
-                    let d = (DVec3::from(f.centre) + DVec3::from(f.east) * x + DVec3::from(f.north) * y).normalize();
-                    let (lat, lon) = crate::geo::lat_lon(d);
-                    map.sample(lat, lon).filter(|v| v.is_finite()).unwrap_or(NO_DATA)
-                })
+        // Up to 6 x 1024^2 samples, each with its own trigonometry: in parallel, in order.
+        let values: Vec<f32> = (0..faces.len() as u32 * side * side)
+            .into_par_iter()
+            .map(|j| {
+                let (f, i) = (&faces[(j / (side * side)) as usize], j % (side * side));
+                let (col, row) = (i % side, i / side);
+                let x = f.x0 + (f64::from(col) + 0.5) * f.step;
+                let y = f.y0 + (f64::from(row) + 0.5) * f.step;
+                let d = (DVec3::from(f.centre) + DVec3::from(f.east) * x + DVec3::from(f.north) * y).normalize();
+                let (lat, lon) = crate::geo::lat_lon(d);
+                map.sample(lat, lon).filter(|v| v.is_finite()).unwrap_or(NO_DATA)
             })
             .collect();
         Some(Guide { faces, side, values, min_edge_m: pixel * radius })
