@@ -1,14 +1,16 @@
 //! A DEM of any region at any resolution, as a WCS `GetCoverage` would give it: `riverworld dem`
 //! and `GET /v1/planets/{id}/dem.tif`.
 //!
-//! **Grid.** `width x height` cells over a bounding box `W,S,E,N` (degrees, EPSG:4326), sampled
-//! at cell centres ([`GeoBounds::lat_of`], [`GeoBounds::lon_of`]); `height` defaults to the
-//! value that keeps cells square in degrees.
+//! **Grid.** `width x height` cells over a bounding box `W,S,E,N` (degrees), sampled at cell
+//! centres ([`DemRequest::lat_of`], [`GeoBounds::lon_of`]): rows evenly spaced in latitude
+//! (EPSG:4326; `height` defaults to the value that keeps cells square in degrees) or in Web
+//! Mercator `y` (the elevation tiles of `terrain_rgb.rs`).
 //!
 //! **Surface.** The planet is refined along its bisection tree (`tiles/tree.rs`) with the same
-//! reproducible split as views and tiles, below every tree node that meets the bbox until the
-//! node's refinement edge is no longer than a cell (its smaller side, at most four times finer
-//! than the larger near the poles) or the planet's minimum edge length. So a DEM shows the
+//! reproducible split as views and tiles, below every tree node that meets the bbox, down to the
+//! base mesh's leaves at least and until the node's refinement edge is no longer than
+//! [`LEAF_EDGE_CELLS`] cells (of its smaller side, at most four times finer than the larger near
+//! the poles) or the planet's minimum edge length. So a DEM shows the
 //! surface a view at that detail shows, and two DEMs agree wherever their detail does. The bbox
 //! is cut into blocks of [`BLOCK`] x [`BLOCK`] cells refined in parallel, each by its own
 //! refiner, which bounds memory; every cell takes the value linearly interpolated on the
@@ -34,7 +36,7 @@ pub const MAX_DEM_SIDE: u32 = 8192;
 /// Default most cells (width x height) of one DEM.
 pub const DEFAULT_MAX_DEM_PIXELS: u64 = 4096 * 4096;
 /// Longest refinement edge of the surface a DEM samples, in cells: triangles whose legs are
-/// about a cell.
+/// about two cells: about one vertex per cell.
 pub const LEAF_EDGE_CELLS: f64 = 2.0 * std::f64::consts::SQRT_2;
 /// Side of the square blocks of cells refined and sampled together.
 pub const BLOCK: u32 = 512;
@@ -137,7 +139,7 @@ impl DemRequest {
         };
         let pixels = u64::from(width) * u64::from(height);
         if pixels > max_pixels {
-            let field = if pixels / u64::from(height) > 0 && height > width { "height" } else { "width" };
+            let field = if height > width { "height" } else { "width" };
             return Err(refuse(field, format!("{width}x{height} is {pixels} cells; at most {max_pixels} are served")));
         }
         Ok(DemRequest { bounds, width, height, rows: Rows::Degrees })
