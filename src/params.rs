@@ -348,6 +348,12 @@ mod tests {
         let text = serde_json::to_string(&req).unwrap();
         assert_eq!(PlanetRequest::from_json(&text).unwrap(), req);
         assert_eq!(PlanetRequest::from_json("{}").unwrap().params, Params::default());
+        // Digits past what an f64 holds parse to the nearest f64, so the shortest form printed
+        // back parses to the same number (found by fuzzing: the default parser was one ulp off).
+        let long = r#"{"params": {"radius_m": 3985029, "land_percent": 30.5555555555555484550}}"#;
+        let req = PlanetRequest::from_json(long).unwrap();
+        let text = serde_json::to_string(&req).unwrap();
+        assert_eq!(PlanetRequest::from_json(&text).unwrap(), req);
     }
 
     #[test]
