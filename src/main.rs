@@ -47,7 +47,8 @@ struct PlanetArgs {
     #[arg(long, value_parser = parse_range, allow_hyphen_values = true)]
     map_range: Option<(f64, f64)>,
     /// Bounds of a regional PNG map in degrees, "WEST,SOUTH,EAST,NORTH" [default: the whole globe;
-    /// GeoTIFFs carry their own]. Outside a regional map the planet is sea.
+    /// GeoTIFFs carry their own]. Beyond a regional map the planet is sea (an elevation map gets a
+    /// shore outside its bounds).
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
     map_bounds: Option<GeoBounds>,
     /// JSON file {"seed": N, "params": {...}} with the planet parameters (paper Table 2).

@@ -108,6 +108,9 @@ const ELEVATION_PIXELS_PER_EDGE: f64 = 4.0;
 /// than 2048 pixels across gets the mesh of one at 2048 (~170 km refinement edges), not one
 /// that grows with the map's size.
 const MAP_FACES: f64 = 75_000.0;
+/// Width of the shore around a regional elevation map, in refinement edges: enough that the
+/// coast's faces, and the ground they pull towards sea level, stay outside the map's bounds.
+const SHORE_EDGES: f64 = 3.0;
 
 /// Target edge length (m) to honour a map's detail: a few pixels per edge, within the bounds'
 /// share of [`MAP_FACES`].
@@ -130,8 +133,15 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     progress("base shape", 0.0);
     let mut mesh = shape::octahedron(p.radius_m, spec.seed);
     shape::refine_to(&mut mesh, p.base_faces as usize, spec.seed);
-    if let Some(map) = &spec.map {
-        let target = map_edge_length(map, p.radius_m);
+    // A regional elevation map's coast lies outside its bounds (see `maps::margin`): the mesh,
+    // rivers and guide see the map widened by a shore of SHORE_EDGES refinement edges.
+    let target = spec.map.as_deref().map(|m| map_edge_length(m, p.radius_m));
+    let edge_px =
+        spec.map.as_deref().zip(target).map_or(0.0, |(m, t)| t / (m.pixel_size_deg().1.to_radians() * p.radius_m));
+    let shore_px = (SHORE_EDGES * edge_px).ceil();
+    let widened = spec.map.as_deref().and_then(|m| m.with_shore(shore_px as u32));
+    let map_in = widened.as_ref().or(spec.map.as_deref());
+    if let (Some(map), Some(target)) = (map_in, target) {
         let bounds = map.bounds;
         shape::refine_where(&mut mesh, MAX_BASE_FACES as usize, |m, f| {
             let face = &m.faces[f as usize];
@@ -139,7 +149,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         });
     }
     progress("continents", 0.3);
-    match &spec.map {
+    match map_in {
         Some(map) => {
             continents::from_map(&mut mesh, map);
             let land = (0..mesh.faces.len() as u32).filter(|&f| mesh.face_kind(f) == FaceKind::Land).count();
@@ -157,15 +167,15 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     progress("rivers", 0.4);
     // Vertices sample the map averaged over about their spacing (a third of the refinement edge).
     let relief = spec.map.as_deref().filter(|m| m.kind == MapKind::Elevation).map(|m| {
-        let (_, dlat) = m.pixel_size_deg();
-        let edge_px = map_edge_length(m, p.radius_m) / (dlat.to_radians() * p.radius_m);
-        m.box_filtered((edge_px / 3.0) as u32)
+        let filtered = m.box_filtered((edge_px / 3.0) as u32);
+        let k = f64::from(m.width / filtered.width);
+        filtered.with_shore((shore_px / k).ceil() as u32).unwrap_or(filtered)
     });
     let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     // Splits below the base mesh follow an elevation map where it resolves them.
-    mesh.guide = spec.map.as_deref().and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
+    mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
     let runoff_mm = runoff(&mesh, p.sea_level_m);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));

@@ -7,9 +7,14 @@ use crate::maps::GeoBounds;
 use crate::maps::MapLimits;
 use crate::mesh::raster::SphereRaster;
 
-fn from_map(path: &str) -> Option<Planet> {
+/// The elevation map in the file at `path`, if the file is there.
+fn map_file(path: &str) -> Option<Map> {
     let bytes = std::fs::read(path).ok()?;
-    let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
+    Some(Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap())
+}
+
+fn from_map(path: &str) -> Option<Planet> {
+    let map = map_file(path)?;
     let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
     Some(build_planet(&spec, &mut |_, _| {}).unwrap())
 }
@@ -490,14 +495,7 @@ fn great_rivers_carry_their_discharge_within_a_factor_of_three() {
 #[test]
 fn dems_below_the_base_mesh_keep_the_maps_relief() {
     let Some(planet) = earth() else { return };
-    let map = Map::decode(
-        &std::fs::read("maps/earth_etopo5_1024x512.tif").unwrap(),
-        MapKind::Elevation,
-        None,
-        None,
-        &MapLimits::default(),
-    )
-    .unwrap();
+    let map = map_file("maps/earth_etopo5_1024x512.tif").unwrap();
     let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
     for (name, bbox, min_r) in [("Himalaya", "78,24,92,34", 0.98), ("Aleutian Trench", "-180,46,-160,56", 0.995)] {
         let req = crate::export::dem::DemRequest::new(bbox, 80, None, 1 << 24).unwrap();
@@ -522,4 +520,37 @@ fn dems_below_the_base_mesh_keep_the_maps_relief() {
             assert!((-9000.0..-5000.0).contains(&deepest), "{name}: deepest {deepest}");
         }
     }
+}
+
+/// A regional DEM that is land to its edges keeps its heights to its edges: the coast lies in
+/// the shore outside its bounds (`maps/margin.rs`), so the outer cells of a DEM over the bounds
+/// are the map's ground, not a coast pulled down to sea level (before the shore: ground down to
+/// -33 m and a median error of ~100 m in the outer ring of Jacksboro, whose map is 254-1,053 m).
+#[test]
+fn a_regional_map_keeps_its_heights_to_its_edges() {
+    let Some(planet) = from_map("maps/region_jacksboro_tn_403x344.tif") else { return };
+    let map = map_file("maps/region_jacksboro_tn_403x344.tif").unwrap();
+    let b = map.bounds;
+    let bbox = format!("{},{},{},{}", b.west, b.south, b.east, b.north);
+    let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet), Params::default()).unwrap();
+    let req = crate::export::dem::DemRequest::new(&bbox, 100, Some(86), 1 << 24).unwrap();
+    let dem = tiles.dem(&req);
+    let (w, h) = (req.width, req.height);
+    let mut ring_errors = Vec::new();
+    for r in 0..h {
+        for c in 0..w {
+            if r.min(h - 1 - r).min(c).min(w - 1 - c) >= 3 {
+                continue;
+            }
+            let (lat, lon) = (req.bounds.lat_of(r, h), req.bounds.lon_of(c, w));
+            let want = f64::from(map.sample(lat, lon).unwrap());
+            let got = f64::from(dem.ground[(r * w + c) as usize]);
+            assert!(got > 150.0, "cell {r},{c} at {got:.0} m, the map {want:.0} m");
+            ring_errors.push((got - want).abs());
+        }
+    }
+    ring_errors.sort_by(f64::total_cmp);
+    let median = ring_errors[ring_errors.len() / 2];
+    eprintln!("outer ring: {} cells, median |error| {median:.1} m", ring_errors.len());
+    assert!(median < 30.0, "median |planet - map| in the outer ring: {median:.1} m");
 }

@@ -13,6 +13,7 @@
 mod bounds;
 mod error;
 mod geotiff;
+mod margin;
 mod png;
 #[cfg(test)]
 mod test_support;
@@ -30,6 +31,7 @@ use serde::{Deserialize, Serialize};
 
 pub use bounds::GeoBounds;
 pub use error::MapError;
+pub use margin::SHORE_RIM_M;
 
 /// Water below sea level that reaches this deep is sea even where the map lost its strait to
 /// the ocean (the Black Sea's Bosporus at 20 km pixels). No land depression is as deep: the
