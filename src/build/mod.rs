@@ -178,6 +178,8 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
     let runoff_mm = runoff(&mesh, p.sea_level_m);
+    // Channel widths for the water surface, from the discharge of the climate's runoff.
+    mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &runoff_mm)).map(std::sync::Arc::new);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));
     let stats = Stats {
         faces: mesh.faces.len(),

@@ -50,16 +50,52 @@ const PERENNIAL_RUNOFF_MM: f64 = 5.0;
 /// with the coefficients Knighton (1998) quotes, width `3.5 Q^0.51` m and depth `0.36 Q^0.37` m.
 impl Reach {
     pub fn width_m(&self) -> f64 {
-        3.5 * self.discharge_m3s.max(0.0).powf(0.51)
+        channel_width_m(self.discharge_m3s)
     }
     pub fn depth_m(&self) -> f64 {
         0.36 * self.discharge_m3s.max(0.0).powf(0.37)
     }
     /// Whether the reach flows all year (see [`PERENNIAL_M3S`]).
     pub fn perennial(&self) -> bool {
-        let runoff_mm = self.discharge_m3s * SECONDS_PER_YEAR / self.upstream_area_m2.max(1.0) * 1e3;
-        self.discharge_m3s >= PERENNIAL_M3S && runoff_mm >= PERENNIAL_RUNOFF_MM
+        perennial(self.discharge_m3s, self.upstream_area_m2)
     }
+}
+
+/// Channel width (m) at mean discharge `q` (m³/s): `3.5 Q^0.51` (see [`Reach`]).
+pub fn channel_width_m(q: f64) -> f64 {
+    3.5 * q.max(0.0).powf(0.51)
+}
+
+/// Whether a river with mean discharge `q` (m³/s) from `area_m2` flows all year (see
+/// [`PERENNIAL_M3S`]).
+pub fn perennial(q: f64, area_m2: f64) -> bool {
+    let runoff_mm = q * SECONDS_PER_YEAR / area_m2.max(1.0) * 1e3;
+    q >= PERENNIAL_M3S && runoff_mm >= PERENNIAL_RUNOFF_MM
+}
+
+/// The channels of a built mesh's rivers (see [`crate::mesh::channels`]): at each river vertex
+/// off lakes, the width of its channel at the discharge `flow` through it (from
+/// [`RiverGraph::discharge`]), 0 where the river does not flow all year. `None` without rivers.
+pub fn channels(mesh: &Mesh, graph: &RiverGraph, flow: &[f64]) -> Option<crate::mesh::channels::Channels> {
+    let area = graph.drainage_area(mesh);
+    let river = |v: usize| {
+        let f = mesh.vertices[v].flags;
+        f.contains(VertexFlags::RIVER) && !f.contains(VertexFlags::LAKE)
+    };
+    let points: Vec<(glam::DVec3, f32)> = (0..mesh.vertices.len())
+        .filter(|&v| river(v))
+        .map(|v| {
+            let w = if perennial(flow[v], area[v]) { channel_width_m(flow[v]) } else { 0.0 };
+            (mesh.vertices[v].p().normalize(), w as f32)
+        })
+        .collect();
+    let reach = mesh
+        .edges
+        .iter()
+        .filter(|e| e.kind == EdgeKind::River)
+        .map(|e| mesh.vertices[e.v[0] as usize].p().distance(mesh.vertices[e.v[1] as usize].p()))
+        .fold(0.0f64, f64::max);
+    crate::mesh::channels::Channels::new(&points, reach, mesh.radius)
 }
 
 impl RiverGraph {

@@ -4,7 +4,7 @@
 use super::climate::water_colour;
 use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh, GlbTooLarge};
 use super::surface_normals;
-use super::water::{is_wet, water_levels};
+use super::water::{shows_water, water_levels};
 use crate::mesh::terrain::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -31,14 +31,14 @@ pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Result<Vec<u8>, 
     ])
 }
 
-/// Of the mesh's `triangles` ([`Mesh::triangles`]), those with at least one submerged corner,
-/// at the water `levels` ([`water_levels`]: dry corners at the level of the water they border,
-/// below their ground, so the surface meets the shore inside the face); colour by depth.
+/// Of the mesh's `triangles` ([`Mesh::triangles`]), those that show water at the water
+/// `levels` ([`water_levels`]: a corner's level above its ground; dry corners below their
+/// ground, so the surface meets the shore inside the face); colour by depth.
 /// Vertices are numbered in order of first use.
 pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]], levels: &[f64]) -> GlbMesh {
     use rayon::prelude::*;
     let vertices = &mesh.vertices;
-    let wet: Vec<[u32; 3]> = triangles.par_iter().copied().filter(|t| is_wet(mesh, t)).collect();
+    let wet: Vec<[u32; 3]> = triangles.par_iter().copied().filter(|t| shows_water(mesh, levels, t)).collect();
     // Numbering in order of first use is sequential; the attributes are computed in parallel.
     let mut slot = vec![u32::MAX; vertices.len()];
     let mut used = Vec::new();

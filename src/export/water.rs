@@ -1,50 +1,115 @@
 //! The water surface (paper §3.3): the level it takes at every vertex of the faces it covers.
 //!
 //! Water stands where a vertex's water altitude is above its ground. A face with wet and dry
-//! corners is partly flooded: its dry corners take the level of the water they border, below
-//! their ground, so a flat surface meets the linearly interpolated ground inside the face (the
-//! depth test draws the shore) instead of ramping up to the dry corners' ground.
+//! corners is partly flooded: its dry corners take a level below their ground, so the surface
+//! meets the linearly interpolated ground inside the face (the depth test, or the renderer's
+//! signed depth, draws the shore) instead of ramping up to the dry corners' ground.
+//!
+//! Beside the sea and lakes that level is the water's own (a flat surface). Beside a river it
+//! is set so that the shore crosses each edge from the river vertex at half the channel's width
+//! ([`crate::mesh::channels`]): a 300 m river is about 300 m wide however large the faces
+//! beside it, a river narrower than a pixel is a thin line or nothing, and a river that does
+//! not flow all year is a dry bed.
 
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, Vertex, VertexFlags};
 use rayon::prelude::*;
 
-/// Whether any corner of triangle `t` stands under water: the faces the water surface covers.
+/// Whether any corner of triangle `t` stands under water (its ground below its water
+/// altitude): the faces whose water [`water_levels`] looks at.
 #[inline]
 pub fn is_wet(mesh: &Mesh, t: &[u32; 3]) -> bool {
     t.iter().any(|&v| mesh.vertices[v as usize].submerged())
 }
 
+/// Whether triangle `t` shows water at the `levels` of [`water_levels`]: a corner's level is
+/// above its ground. The faces the water surface covers.
+#[inline]
+pub fn shows_water(mesh: &Mesh, levels: &[f64], t: &[u32; 3]) -> bool {
+    t.iter().any(|&v| levels[v as usize] > mesh.vertices[v as usize].ground)
+}
+
+/// Half the channel width (m) of a river vertex off lakes, where the mesh knows its rivers'
+/// widths; `None` for the sea, lakes, land, or without widths. A river vertex of a fine view
+/// far from the base mesh's rivers (a new arm) is a small stream.
+fn half_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
+    let channels = mesh.channels.as_deref()?;
+    let f = v.flags;
+    if !f.contains(VertexFlags::RIVER) || f.contains(VertexFlags::LAKE) {
+        return None;
+    }
+    Some(f64::from(channels.width_at(v.p().normalize()).unwrap_or(SMALL_STREAM_M)) * 0.5)
+}
+
+/// Width (m) of a river vertex with no base-mesh river near it.
+pub const SMALL_STREAM_M: f32 = 2.0;
+
+/// Depth (m) of the water drawn at a flowing river's vertex where the mesh gives it none (its
+/// water at its ground). Where the shore lies does not depend on it, only the water's colour.
+pub const SHALLOW_RIVER_M: f64 = 1.0;
+
 /// Level of the water surface at every vertex, metres above the base sphere: its own water
-/// altitude where it is submerged, else the highest water altitude of the submerged vertices it
-/// shares one of `triangles` with, else its own water (its ground). Deterministic: a maximum
-/// does not depend on the order it is taken in.
+/// altitude where it is submerged (a river's dry bed excepted), else the highest level the
+/// water of the faces of `triangles` it shares with submerged vertices gives it (see the
+/// module's doc), else its own water (its ground). Deterministic: a maximum does not depend on
+/// the order it is taken in.
 pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     let vertices = &mesh.vertices;
+    let half: Vec<Option<f64>> = vertices.par_iter().map(|v| half_width(mesh, v)).collect();
+    // A flowing river's vertex carries its channel's water, SHALLOW_RIVER_M deep where the
+    // mesh gives it none; a dry bed carries none.
+    let wet = |v: usize| (vertices[v].submerged() || half[v].is_some()) && half[v] != Some(0.0);
+    let own = |v: usize| {
+        let vert = &vertices[v];
+        if half[v].is_some() && !vert.submerged() {
+            vert.ground + SHALLOW_RIVER_M
+        } else {
+            vert.water
+        }
+    };
     let mut level: Vec<f64> =
-        vertices.par_iter().map(|v| if v.submerged() { v.water } else { f64::NEG_INFINITY }).collect();
-    // Each face's highest standing water, in parallel; spread to its dry corners in face order.
-    let wet_faces: Vec<([u32; 3], f64)> = triangles
+        (0..vertices.len()).into_par_iter().map(|v| if wet(v) { own(v) } else { f64::NEG_INFINITY }).collect();
+    // The level each face's water gives each of its dry corners, in parallel; the highest per
+    // vertex, in face order.
+    let offers: Vec<(u32, f64)> = triangles
         .par_iter()
-        .filter_map(|&corners| {
-            let wet = corners
-                .iter()
-                .map(|&v| &vertices[v as usize])
-                .filter(|v| v.submerged())
-                .map(|v| v.water)
-                .fold(f64::NEG_INFINITY, f64::max);
-            (wet > f64::NEG_INFINITY).then_some((corners, wet))
+        .flat_map_iter(|&corners| {
+            let mut out = [(0u32, f64::NEG_INFINITY); 3];
+            for (slot, &v) in out.iter_mut().zip(&corners) {
+                if wet(v as usize) {
+                    continue;
+                }
+                let dry = &vertices[v as usize];
+                let best = corners
+                    .iter()
+                    .filter(|&&u| wet(u as usize))
+                    .map(|&u| {
+                        let (river, water) = (&vertices[u as usize], own(u as usize));
+                        match half[u as usize] {
+                            None => water,
+                            Some(h) => {
+                                let along = river.p().normalize().distance(dry.p().normalize()) * mesh.radius;
+                                if h >= along {
+                                    water
+                                } else {
+                                    // The signed depth, linear along the edge, is zero `h` from
+                                    // the river vertex.
+                                    dry.ground - (water - river.ground) * (along / h - 1.0)
+                                }
+                            }
+                        }
+                    })
+                    .fold(f64::NEG_INFINITY, f64::max);
+                *slot = (v, best);
+            }
+            out.into_iter().filter(|&(_, l)| l > f64::NEG_INFINITY)
         })
         .collect();
-    for &(corners, wet) in &wet_faces {
-        for v in corners {
-            if !vertices[v as usize].submerged() {
-                level[v as usize] = level[v as usize].max(wet);
-            }
-        }
+    for (v, offer) in offers {
+        level[v as usize] = level[v as usize].max(offer);
     }
     level.par_iter_mut().zip(vertices.par_iter()).for_each(|(l, v)| {
         if *l == f64::NEG_INFINITY {
-            *l = v.water;
+            *l = v.water.min(v.ground);
         }
     });
     level
@@ -82,5 +147,49 @@ mod tests {
         let mut reversed = tris.clone();
         reversed.reverse();
         assert_eq!(water_levels(&mesh, &reversed), level);
+    }
+
+    /// A river vertex between two dry banks 100 m away, with the base mesh's channels of
+    /// `width` metres at its place; its water 3 m over its bed, or none.
+    fn channel(width: f32, depth: f64) -> (Mesh, Vec<[u32; 3]>) {
+        let r = 1000.0;
+        let dirs = [DVec3::X, DVec3::new(0.1f64.cos(), 0.1f64.sin(), 0.0), DVec3::new(0.1f64.cos(), 0.0, 0.1f64.sin())];
+        let mut vs: Vec<Vertex> = dirs.iter().enumerate().map(|(i, d)| Vertex::new(*d * r, i as u32)).collect();
+        for (v, g) in vs.iter_mut().zip([7.0, 12.0, 30.0]) {
+            v.ground = g;
+            v.water = g;
+        }
+        vs[0].water = 7.0 + depth;
+        vs[0].flags = VertexFlags::RIVER;
+        let channels = crate::mesh::channels::Channels::new(&[(DVec3::X, width)], 100.0, r).unwrap();
+        let mesh = Mesh { radius: r, vertices: vs, channels: Some(std::sync::Arc::new(channels)), ..Mesh::default() };
+        (mesh, vec![[0, 1, 2]])
+    }
+
+    #[test]
+    fn a_river_is_as_wide_as_its_channel() {
+        let (mesh, tris) = channel(50.0, 3.0);
+        let level = water_levels(&mesh, &tris);
+        assert_eq!(level[0], 10.0);
+        // Along each edge from the river, the signed depth (linear) is zero 25 m out.
+        for bank in [1, 2] {
+            let along = mesh.vertices[0].p().distance(mesh.vertices[bank].p());
+            let (d0, d1) = (level[0] - 7.0, level[bank] - mesh.vertices[bank].ground);
+            let shore = along * d0 / (d0 - d1);
+            assert!((shore - 25.0).abs() < 1e-9, "bank {bank}: shore {shore} m out");
+        }
+        assert!(shows_water(&mesh, &level, &tris[0]));
+        // A channel wider than the faces covers them at the river's level (the banks' ground
+        // draws the shore).
+        let (wide, tris) = channel(500.0, 3.0);
+        assert_eq!(water_levels(&wide, &tris), vec![10.0, 10.0, 10.0]);
+        // A river with no depth in the mesh still carries water.
+        let (shallow, tris) = channel(50.0, 0.0);
+        assert_eq!(water_levels(&shallow, &tris)[0], 7.0 + SHALLOW_RIVER_M);
+        // A dry bed (a river that does not flow all year) shows no water at all.
+        let (wadi, tris) = channel(0.0, 3.0);
+        let level = water_levels(&wadi, &tris);
+        assert_eq!(level, vec![7.0, 12.0, 30.0]);
+        assert!(!shows_water(&wadi, &level, &tris[0]));
     }
 }

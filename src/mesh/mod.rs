@@ -14,6 +14,7 @@
 
 pub mod altitude;
 mod batch;
+pub mod channels;
 mod collapse;
 mod diamond;
 pub mod guide;
@@ -111,6 +112,8 @@ pub struct Mesh {
     pub faces: Vec<Face>,
     /// The elevation map's ground for splits below the base mesh (elevation-map planets).
     pub guide: Option<std::sync::Arc<guide::Guide>>,
+    /// The base mesh's river widths, for the water surface (planets with a climate).
+    pub channels: Option<std::sync::Arc<channels::Channels>>,
 }
 
 impl Vertex {
@@ -235,7 +238,7 @@ impl Mesh {
     /// and for surface patches, whose border edges have one face (the other is [`NONE`]).
     pub fn from_triangles(radius: f64, vertices: Vec<Vertex>, tris: &[[u32; 3]]) -> Mesh {
         use std::collections::HashMap;
-        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new(), guide: None };
+        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new(), guide: None, channels: None };
         let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
         for (fi, t) in tris.iter().enumerate() {
             let mut face = Face { e: [NONE; 3] };

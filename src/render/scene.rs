@@ -109,8 +109,11 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             }
         })
         .collect();
-    let water: Vec<u32> =
-        triangles.par_iter().filter(|t| crate::export::water::is_wet(mesh, t)).flat_map_iter(|&t| t).collect();
+    let water: Vec<u32> = triangles
+        .par_iter()
+        .filter(|t| crate::export::water::shows_water(mesh, &levels, t))
+        .flat_map_iter(|&t| t)
+        .collect();
     let terrain: Vec<u32> = triangles.into_iter().flatten().collect();
     let (fwd, right, up) = cam.basis();
     let tan_y = (cam.fov_deg.to_radians() * 0.5).tan();

@@ -211,3 +211,43 @@ fn one_metre_above_the_ground_the_near_ground_and_the_sky_are_drawn() {
     }
     assert!(img.chunks_exact(4).all(|p| p[0] as u32 + p[1] as u32 + p[2] as u32 > 60), "no black pixels");
 }
+
+/// The planet of the shipped Earth DEM.
+fn earth_dem() -> &'static (Planet, Params) {
+    static EARTH: OnceLock<(Planet, Params)> = OnceLock::new();
+    EARTH.get_or_init(|| {
+        let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_etopo5_1024x512.tif")).unwrap();
+        let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
+        let params = Params::default();
+        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()) };
+        (build_planet(&spec, &mut |_, _| {}).unwrap(), params)
+    })
+}
+
+/// Share of water-coloured pixels (blue over red and green) of an image.
+fn water_share(img: &[u8]) -> f64 {
+    let px = img.chunks_exact(4).filter(|p| p[2] as i32 > p[0] as i32 + 20 && p[2] > p[1]).count();
+    px as f64 / (img.len() / 4) as f64
+}
+
+/// Seen from 1,250 km above the Sahara, rivers are as wide as their channels (a wadi is a dry
+/// bed, a perennial river far narrower than a pixel), so the desert does not look wet: under 2 %
+/// of the image is water (the one terminal lake near Lake Chad's basin), against 8 % when every
+/// face beside a river is flooded to the river's level (the planet without its channels).
+#[test]
+fn the_sahara_from_orbit_is_dry() {
+    let (planet, params) = earth_dem();
+    let (lat, lon, altitude) = (22.0, 12.0, 1_250_000.0);
+    let (eye, target) = (direction(lat, lon) * (params.radius_m + altitude), direction(lat, lon) * params.radius_m);
+    let q = format!(
+        "eye={},{},{}&target={},{},{}&width=320&height=240&fov=60",
+        eye.x, eye.y, eye.z, target.x, target.y, target.z
+    );
+    let shot = Shot { camera: Camera::parse_query(&q, params.radius_m).unwrap().0, sun: None };
+    let img = snapshot(renderer(), &planet.mesh, params, &shot, 300_000, None).unwrap();
+    let share = water_share(&img);
+    let unchannelled = Mesh { channels: None, ..planet.mesh.clone() };
+    let flooded = water_share(&snapshot(renderer(), &unchannelled, params, &shot, 300_000, None).unwrap());
+    assert!(share <= 0.02, "water on {:.1} % of the Sahara view", share * 100.0);
+    assert!(flooded > 2.0 * share, "without channels {:.1} %, with {:.1} %", flooded * 100.0, share * 100.0);
+}

@@ -187,9 +187,10 @@ fn render(
 /// horizon's height, the sea never finer than the land; 3: the water surface meets the shore
 /// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
 /// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water; 6:
-/// splits of an elevation map planet follow the map where it resolves them), so
+/// splits of an elevation map planet follow the map where it resolves them; 7: rivers' water
+/// as wide as their channels, a regional elevation map's coast outside its bounds), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-const ANSWERS_REVISION: &str = "6";
+const ANSWERS_REVISION: &str = "7";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -294,7 +294,8 @@ fn run_build(state: &Arc<AppState>, entry: &Arc<Entry>) {
     match outcome {
         Ok(planet) => {
             let planet = Arc::new(planet);
-            let guide = planet.mesh.guide.as_ref().map_or(0, |g| 4 * g.values.len());
+            let guide = planet.mesh.guide.as_ref().map_or(0, |g| 4 * g.values.len())
+                + planet.mesh.channels.as_ref().map_or(0, |c| c.bytes());
             let bytes = (planet.mesh.bytes_per_vertex() * planet.mesh.vertices.len() as f64) as usize + guide;
             tracing::info!(id = %entry.id, ms = planet.stats.build_ms, faces = planet.stats.faces, "build finished");
             let stats = planet.stats.clone();

@@ -134,6 +134,7 @@ impl Adapter {
         if changed && wanted {
             self.mesh = download(gpu, &dm, self.mesh.radius)?;
             self.mesh.guide = self.base.guide.clone();
+            self.mesh.channels = self.base.channels.clone();
         }
         self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
         Ok(converged)
@@ -175,7 +176,7 @@ impl Adapter {
         };
         match download(gpu, dm, self.mesh.radius) {
             Ok(mesh) => {
-                self.mesh = Mesh { guide: self.base.guide.clone(), ..mesh };
+                self.mesh = Mesh { guide: self.base.guide.clone(), channels: self.base.channels.clone(), ..mesh };
                 self.resident.ahead = false;
             }
             Err(e) => {

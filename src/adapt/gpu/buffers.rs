@@ -219,6 +219,7 @@ impl DeviceMesh {
                 edges: checked_vec::<Edge>(&e?, "edge")?,
                 faces: checked_vec::<Face>(&f?, "face")?,
                 guide: None,
+                channels: None,
             });
         }
         let staging = scoped(gpu, || {
@@ -241,6 +242,7 @@ impl DeviceMesh {
                 edges: checked_vec::<Edge>(edge_bytes, "edge")?,
                 faces: checked_vec::<Face>(face_bytes, "face")?,
                 guide: None,
+                channels: None,
             })
         })?
     }

@@ -121,7 +121,8 @@ fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
             })
         })
         .collect();
-    (Mesh::from_triangles(mesh.radius, vertices, &triangles), ids)
+    let surface = Mesh { channels: mesh.channels.clone(), ..Mesh::from_triangles(mesh.radius, vertices, &triangles) };
+    (surface, ids)
 }
 
 /// The border of a surface with `triangles` ([`Mesh::triangles`]): directed edges `(a, b)` of

@@ -1,0 +1,125 @@
+//! River channels at their true width: the channel width (m) of the base mesh's rivers, looked
+//! up by position for any river vertex of any mesh refined from it (the width of the nearest
+//! base-mesh river vertex), so that the water surface of views, tiles and renders covers a
+//! river's channel rather than every face beside it (`export/water.rs`).
+//!
+//! Widths come from the discharge of the planet's climate by hydraulic geometry
+//! (`build/network.rs`: Leopold & Maddock, `w = 3.5 Q^0.51`); a river that does not flow all
+//! year (a wadi) has width 0, a dry bed.
+
+use glam::DVec3;
+
+/// Widths of the base mesh's river vertices, bucketed on a latitude/longitude grid whose cells
+/// are at least as wide as the longest base-mesh river edge.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Channels {
+    /// Grid cell size in degrees, rows (from 90°S) and columns (from 180°W).
+    cell_deg: f64,
+    rows: usize,
+    cols: usize,
+    /// Points of cell `i` are `points[start[i]..start[i + 1]]`.
+    start: Vec<u32>,
+    points: Vec<([f64; 3], f32)>,
+}
+
+impl Channels {
+    /// Channels of river vertices at unit directions `points` with their widths (m); `reach_m`
+    /// is the longest distance at which a vertex still takes a point's width (the base mesh's
+    /// longest river edge) and `radius` the planet's. `None` without points.
+    pub fn new(points: &[(DVec3, f32)], reach_m: f64, radius: f64) -> Option<Channels> {
+        if points.is_empty() {
+            return None;
+        }
+        let cell_deg = (reach_m / radius).to_degrees().clamp(0.01, 30.0);
+        let rows = (180.0 / cell_deg).ceil() as usize;
+        let cols = (360.0 / cell_deg).ceil() as usize;
+        let mut grid = Channels { cell_deg, rows, cols, start: vec![0; rows * cols + 1], points: Vec::new() };
+        let cells: Vec<usize> = points.iter().map(|(d, _)| grid.cell_of(*d)).collect();
+        for &c in &cells {
+            grid.start[c + 1] += 1;
+        }
+        for i in 0..rows * cols {
+            grid.start[i + 1] += grid.start[i];
+        }
+        let mut fill = grid.start.clone();
+        grid.points = vec![([0.0; 3], 0.0); points.len()];
+        for (&(d, w), &c) in points.iter().zip(&cells) {
+            grid.points[fill[c] as usize] = (d.normalize().to_array(), w);
+            fill[c] += 1;
+        }
+        Some(grid)
+    }
+
+    fn row_col(&self, dir: DVec3) -> (usize, usize) {
+        let (lat, lon) = crate::geo::lat_lon(dir);
+        let row = ((lat + 90.0) / self.cell_deg).floor().clamp(0.0, (self.rows - 1) as f64) as usize;
+        let col = ((lon + 180.0) / self.cell_deg).floor().rem_euclid(self.cols as f64) as usize;
+        (row, col)
+    }
+
+    fn cell_of(&self, dir: DVec3) -> usize {
+        let (r, c) = self.row_col(dir);
+        r * self.cols + c
+    }
+
+    /// Width (m) of the base-mesh river vertex nearest to `dir` (a unit direction), if one lies
+    /// within a grid cell of it; ties go to the first stored.
+    pub fn width_at(&self, dir: DVec3) -> Option<f32> {
+        let (row, col) = self.row_col(dir);
+        // Columns narrow towards the poles: search as many as span one cell's width there.
+        let lat = (row as f64 + 0.5) * self.cell_deg - 90.0;
+        let edge_lat = lat.abs() + self.cell_deg;
+        let span = if edge_lat >= 89.0 {
+            self.cols
+        } else {
+            ((1.0 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
+        };
+        let max_chord = (self.cell_deg.to_radians() * 0.5).sin() * 2.0;
+        let mut best: Option<(f64, f32)> = None;
+        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+            let cols: Vec<usize> = if 2 * span + 1 >= self.cols {
+                (0..self.cols).collect()
+            } else {
+                (0..=2 * span).map(|k| (col + self.cols + k - span) % self.cols).collect()
+            };
+            for c in cols {
+                let cell = r * self.cols + c;
+                for &(p, w) in &self.points[self.start[cell] as usize..self.start[cell + 1] as usize] {
+                    let d = DVec3::from_array(p).distance(dir);
+                    if d <= max_chord && best.is_none_or(|(bd, _)| d < bd) {
+                        best = Some((d, w));
+                    }
+                }
+            }
+        }
+        best.map(|(_, w)| w)
+    }
+
+    /// Bytes held.
+    pub fn bytes(&self) -> usize {
+        self.start.len() * 4 + self.points.len() * std::mem::size_of::<([f64; 3], f32)>()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geo::direction;
+
+    #[test]
+    fn the_nearest_river_vertex_gives_the_width() {
+        let r = 6_371_000.0;
+        let pts = [(direction(0.0, 0.0), 100.0), (direction(0.0, 1.0), 300.0), (direction(60.0, 179.9), 7.0)];
+        let c = Channels::new(&pts, 150_000.0, r).unwrap();
+        assert_eq!(c.width_at(direction(0.0, 0.3)), Some(100.0));
+        assert_eq!(c.width_at(direction(0.2, 0.7)), Some(300.0));
+        // Across the antimeridian, and nothing where no river is near.
+        assert_eq!(c.width_at(direction(60.1, -179.8)), Some(7.0));
+        assert_eq!(c.width_at(direction(30.0, 30.0)), None);
+        assert_eq!(c.width_at(direction(0.0, 3.0)), None);
+        // Near a pole every column is searched.
+        let polar = Channels::new(&[(direction(89.5, 10.0), 5.0)], 150_000.0, r).unwrap();
+        assert_eq!(polar.width_at(direction(89.5, -170.0)), Some(5.0));
+        assert!(Channels::new(&[], 1.0, r).is_none());
+    }
+}
