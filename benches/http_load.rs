@@ -21,8 +21,14 @@
 //! cargo bench --bench http_load                                 # 64 connections, 20 s + 20 s + 60 s
 //! cargo bench --bench http_load -- --connections 16 --phase 5 --duration 10
 //! cargo bench --bench http_load -- --tiles-only                 # only the 3D Tiles phases
+//! cargo bench --bench http_load -- --replicas --duration 30      # three replicas behind HAProxy
 //! ```
+//!
+//! `--replicas` runs only the phases of `http_load/replicas.rs`: three replicas on one store
+//! behind HAProxy (installed: `apt-get install haproxy`), one killed and restarted mid-run.
 
+#[path = "http_load/replicas.rs"]
+mod replicas;
 #[path = "http_load/tiles.rs"]
 mod tiles;
 
@@ -32,18 +38,20 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 const RENDER: &str = "eye=2e7,1e7,5e6&target=0,0,0&width=640&height=360";
-const VIEW: &str = "eye=7e6,0,3e6&target=0,0,0&width=1280&height=720&max_faces=200000";
+const VIEW: &str = "eye=7e6,0,3e6&target=0,0,0&width=1280&height=720&max_faces=400000";
 
 struct Args {
     connections: usize,
     phase: f64,
     duration: f64,
     tiles_only: bool,
+    replicas: bool,
     max_rss_mib: f64,
 }
 
 fn args() -> Args {
-    let mut a = Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false, max_rss_mib: 1024.0 };
+    let mut a =
+        Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false, replicas: false, max_rss_mib: 1024.0 };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
         let mut value = || it.next().and_then(|v| v.parse::<f64>().ok()).unwrap_or_else(|| usage(&arg));
@@ -52,6 +60,7 @@ fn args() -> Args {
             "--phase" => a.phase = value(),
             "--duration" => a.duration = value(),
             "--tiles-only" => a.tiles_only = true,
+            "--replicas" => a.replicas = true,
             "--max-rss-mib" => a.max_rss_mib = value(),
             "--bench" => {}
             _ => usage(&arg),
@@ -61,7 +70,7 @@ fn args() -> Args {
 }
 
 fn usage(arg: &str) -> ! {
-    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only --max-rss-mib MIB");
+    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only --replicas --max-rss-mib MIB");
     std::process::exit(2)
 }
 
@@ -115,14 +124,19 @@ impl Server {
 
     /// Peak resident set size so far, MiB.
     fn peak_rss_mib(&self) -> f64 {
-        let status = std::fs::read_to_string(format!("/proc/{}/status", self.child.id())).unwrap_or_default();
-        let kb = status
-            .lines()
-            .find_map(|l| l.strip_prefix("VmHWM:"))
-            .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
-            .unwrap_or(f64::NAN);
-        kb / 1024.0
+        peak_rss_mib(self.child.id())
     }
+}
+
+/// Peak resident set size so far of process `pid`, MiB (NaN if it is gone).
+fn peak_rss_mib(pid: u32) -> f64 {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
+    let kb = status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
+        .unwrap_or(f64::NAN);
+    kb / 1024.0
 }
 
 /// One request of a load: method, path and body (POST bodies are JSON). A `{n}` in the path is
@@ -174,10 +188,15 @@ struct Outcome {
 /// `connections` clients, each with one keep-alive connection, send the requests of `mix` in
 /// turn (each starting at its own offset) until `secs` have passed.
 async fn load(base: &str, connections: usize, secs: f64, mix: &[Req]) -> Outcome {
+    let start = Instant::now();
+    gather(spawn_load(base, connections, secs, mix), start).await
+}
+
+/// The clients of [`load`], started; [`gather`] collects their outcomes.
+fn spawn_load(base: &str, connections: usize, secs: f64, mix: &[Req]) -> Vec<tokio::task::JoinHandle<Outcome>> {
     let mix = Arc::new(mix.to_vec());
     let deadline = Instant::now() + Duration::from_secs_f64(secs);
-    let start = Instant::now();
-    let tasks: Vec<_> = (0..connections)
+    (0..connections)
         .map(|c| {
             let (mix, base) = (Arc::clone(&mix), base.to_string());
             tokio::spawn(async move {
@@ -204,8 +223,7 @@ async fn load(base: &str, connections: usize, secs: f64, mix: &[Req]) -> Outcome
                 out
             })
         })
-        .collect();
-    gather(tasks, start).await
+        .collect()
 }
 
 /// Waits for the connections' outcomes and adds them up, latencies sorted.
@@ -262,6 +280,15 @@ async fn warm(client: &reqwest::Client, base: &str, req: &Req) -> usize {
 fn main() {
     let args = args();
     let runtime = tokio::runtime::Runtime::new().expect("runtime");
+    if args.replicas {
+        let errors = runtime.block_on(replicas::run(&mixed(), args.connections, args.duration));
+        println!("\n{errors} answers 5xx with every replica up");
+        if errors > 0 {
+            eprintln!("http_load: FAILED");
+            std::process::exit(1);
+        }
+        return;
+    }
     let server = Server::start();
     let base = server.base.clone();
     runtime.block_on(async {
@@ -279,7 +306,7 @@ fn main() {
         for lon in [0.0f64, 60.0, 120.0, 180.0, 240.0, 300.0] {
             let (s, c) = lon.to_radians().sin_cos();
             let path = format!(
-                "/v1/planets/earth/view.glb?eye={:.0},{:.0},3e6&target=0,0,0&width=1280&height=720&max_faces=200000",
+                "/v1/planets/earth/view.glb?eye={:.0},{:.0},3e6&target=0,0,0&width=1280&height=720&max_faces=400000",
                 7e6 * c,
                 7e6 * s
             );
@@ -290,7 +317,7 @@ fn main() {
         let mut ms: Vec<f64> = cold.iter().map(|c| c.0).collect();
         ms.sort_by(f64::total_cmp);
         println!(
-            "cold view.glb (1280x720, max_faces 200000), {} cameras one at a time: min {:.0} ms, median {:.0} ms, \
+            "cold view.glb (1280x720, max_faces 400000), {} cameras one at a time: min {:.0} ms, median {:.0} ms, \
              max {:.0} ms; {:.1} MB each on average",
             ms.len(),
             ms[0],
@@ -302,39 +329,9 @@ fn main() {
 
         let view = get(format!("/v1/planets/earth/view.glb?{VIEW}"));
         let rivers = get("/v1/planets/earth/rivers.geojson");
-        let mut mix = vec![
-            get("/v1/planets/earth"),
-            get("/v1/planets"),
-            view.clone(),
-            rivers.clone(),
-            get("/v1/planets/earth/landmask.png?width=1024"),
-            get("/v1/planets/earth/preview.png?width=1024"),
-            get("/v1/planets/earth/elevation.tif?width=512"),
-            get("/v1/planets/earth"),
-            get("/v1/planets/earth/view.glb?eye=-5e6,5e6,2e6&target=0,0,0&width=1280&height=720&max_faces=200000"),
-            get("/v1/planets/earth/landmask.png?width=256"),
-            get("/healthz"),
-            rivers.clone(),
-            get("/v1/planets/earth/tiles/0.glb"),
-            get("/v1/planets/earth/tiles/5.glb"),
-            get("/v1/planets/earth/tiles/312.glb"),
-            get("/v1/planets/earth/tiles/6013.glb"),
-            get("/v1/planets/earth/tileset.json"),
-            get(format!("/v1/planets/earth/render.png?{RENDER}")),
-        ];
-        for req in &mix {
+        let mix = mixed();
+        for req in mix.iter().filter(|r| r.post.is_none() && !r.path.contains("{n}")) {
             warm(&client, &base, req).await;
-        }
-        mix.push(get(format!("/v1/planets/earth/render.jpg?{RENDER}&sun=1,{{n}},0")));
-        mix.extend(mix.clone());
-        // A few POSTs: the first of each builds a planet, the repeats answer the existing one.
-        let posts: [&'static str; 3] = [
-            r#"{"seed": 1, "params": {"base_faces": 2000}}"#,
-            r#"{"seed": 2, "params": {"base_faces": 2000}}"#,
-            r#"{"seed": 3, "params": {"base_faces": 2000, "continents": 3}}"#,
-        ];
-        for (i, body) in posts.into_iter().enumerate() {
-            mix.insert(1 + 8 * i, Req { post: Some(body), path: "/v1/planets".into() });
         }
 
         let header =
@@ -363,6 +360,45 @@ fn main() {
         eprintln!("http_load: FAILED");
         std::process::exit(1);
     }
+}
+
+/// The mixed load: planet records and the list, views, rivers, rasters, cached 3D tiles, renders
+/// (one cached camera, one that moves with every request) and a few planet POSTs (the first of
+/// each builds a planet, the repeats answer the existing one).
+fn mixed() -> Vec<Req> {
+    let view = get(format!("/v1/planets/earth/view.glb?{VIEW}"));
+    let rivers = get("/v1/planets/earth/rivers.geojson");
+    let mut mix = vec![
+        get("/v1/planets/earth"),
+        get("/v1/planets"),
+        view.clone(),
+        rivers.clone(),
+        get("/v1/planets/earth/landmask.png?width=1024"),
+        get("/v1/planets/earth/preview.png?width=1024"),
+        get("/v1/planets/earth/elevation.tif?width=512"),
+        get("/v1/planets/earth"),
+        get("/v1/planets/earth/view.glb?eye=-5e6,5e6,2e6&target=0,0,0&width=1280&height=720&max_faces=400000"),
+        get("/v1/planets/earth/landmask.png?width=256"),
+        get("/healthz"),
+        rivers.clone(),
+        get("/v1/planets/earth/tiles/0.glb"),
+        get("/v1/planets/earth/tiles/5.glb"),
+        get("/v1/planets/earth/tiles/312.glb"),
+        get("/v1/planets/earth/tiles/6013.glb"),
+        get("/v1/planets/earth/tileset.json"),
+        get(format!("/v1/planets/earth/render.png?{RENDER}")),
+    ];
+    mix.push(get(format!("/v1/planets/earth/render.jpg?{RENDER}&sun=1,{{n}},0")));
+    mix.extend(mix.clone());
+    let posts: [&'static str; 3] = [
+        r#"{"seed": 1, "params": {"base_faces": 2000}}"#,
+        r#"{"seed": 2, "params": {"base_faces": 2000}}"#,
+        r#"{"seed": 3, "params": {"base_faces": 2000, "continents": 3}}"#,
+    ];
+    for (i, body) in posts.into_iter().enumerate() {
+        mix.insert(1 + 8 * i, Req { post: Some(body), path: "/v1/planets".into() });
+    }
+    mix
 }
 
 /// Render requests answered 200, and otherwise (429 when the render permits are taken).

@@ -59,7 +59,11 @@ pub struct Stats {
     pub drained_fraction: f64,
     pub monotone_violations: usize,
     pub bytes_per_vertex: f64,
-    pub build_ms: f64,
+    /// Wall-clock time of the build (ms). Left out of the service's planet records (`None`):
+    /// it measures the replica that built the planet, not the planet, and every replica must
+    /// answer the same bytes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub build_ms: Option<f64>,
     /// Elevation maps: lakes (the depressions of the map kept as lakes and the terminal lakes
     /// of closed basins), depressions breached as artefacts, and closed (endorheic) basins.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -192,7 +196,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         drained_fraction: graph.drained_fraction(&mesh),
         monotone_violations: graph.monotone_violations,
         bytes_per_vertex: mesh.bytes_per_vertex(),
-        build_ms: start.elapsed().as_secs_f64() * 1000.0,
+        build_ms: Some(start.elapsed().as_secs_f64() * 1000.0),
         lakes: relief.as_ref().map(|_| report.lakes),
         endorheic_basins: relief.as_ref().map(|_| report.endorheic),
         breached_depressions: relief.as_ref().map(|_| report.breached),

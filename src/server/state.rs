@@ -298,7 +298,7 @@ fn run_build(state: &Arc<AppState>, entry: &Arc<Entry>) {
                 + planet.mesh.channels.as_ref().map_or(0, |c| c.bytes());
             let bytes = (planet.mesh.bytes_per_vertex() * planet.mesh.vertices.len() as f64) as usize + guide;
             tracing::info!(id = %entry.id, ms = planet.stats.build_ms, faces = planet.stats.faces, "build finished");
-            let stats = planet.stats.clone();
+            let stats = Stats { build_ms: None, ..planet.stats.clone() };
             if !entry.deleted.load(Ordering::SeqCst) {
                 state.cache.insert(planet_key(&entry.id), Cached::Planet(planet), bytes);
             }
