@@ -154,7 +154,8 @@ def main():
         bad = subprocess.run([BIN, "serve", "--addr", f"127.0.0.1:{free_port()}", "--store", "s3://no-such-bucket/p"],
                              env=env, capture_output=True, text=True, timeout=60)
         assert bad.returncode != 0 and "no-such-bucket" in bad.stderr and "NoSuchBucket" in bad.stderr, bad.stderr
-        print(f"s3_check: a missing bucket stops the server (exit {bad.returncode}): {bad.stderr.strip()[:100]}...")
+        assert "check that the bucket exists" in bad.stderr, bad.stderr
+        print(f"s3_check: a missing bucket stops the server (exit {bad.returncode}): {bad.stderr.strip()[:200]}...")
     finally:
         for p in procs:
             if p.poll() is None:

@@ -89,13 +89,16 @@ pub fn channels(mesh: &Mesh, graph: &RiverGraph, flow: &[f64]) -> Option<crate::
             (mesh.vertices[v].p().normalize(), w as f32)
         })
         .collect();
-    let reach = mesh
+    // Grid cells of a median river edge; the longest one is as far as a width reaches.
+    let mut lens: Vec<f64> = mesh
         .edges
         .iter()
         .filter(|e| e.kind == EdgeKind::River)
         .map(|e| mesh.vertices[e.v[0] as usize].p().distance(mesh.vertices[e.v[1] as usize].p()))
-        .fold(0.0f64, f64::max);
-    crate::mesh::channels::Channels::new(&points, reach, mesh.radius)
+        .collect();
+    lens.sort_by(f64::total_cmp);
+    let (median, longest) = (lens.get(lens.len() / 2).copied()?, lens.last().copied()?);
+    crate::mesh::channels::Channels::new(&points, median, longest, mesh.radius)
 }
 
 impl RiverGraph {

@@ -72,6 +72,7 @@ pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     // vertex, in face order.
     let offers: Vec<(u32, f64)> = triangles
         .par_iter()
+        .filter(|corners| corners.iter().any(|&v| wet(v as usize)))
         .flat_map_iter(|&corners| {
             let mut out = [(0u32, f64::NEG_INFINITY); 3];
             for (slot, &v) in out.iter_mut().zip(&corners) {
@@ -161,7 +162,7 @@ mod tests {
         }
         vs[0].water = 7.0 + depth;
         vs[0].flags = VertexFlags::RIVER;
-        let channels = crate::mesh::channels::Channels::new(&[(DVec3::X, width)], 100.0, r).unwrap();
+        let channels = crate::mesh::channels::Channels::new(&[(DVec3::X, width)], 100.0, 100.0, r).unwrap();
         let mesh = Mesh { radius: r, vertices: vs, channels: Some(std::sync::Arc::new(channels)), ..Mesh::default() };
         (mesh, vec![[0, 1, 2]])
     }

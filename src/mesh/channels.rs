@@ -10,30 +10,36 @@
 use glam::DVec3;
 
 /// Widths of the base mesh's river vertices, bucketed on a latitude/longitude grid whose cells
-/// are at least as wide as the longest base-mesh river edge.
+/// are about as wide as a typical base-mesh river edge; a lookup searches outwards from its
+/// cell until no unsearched cell can hold a nearer point, up to the longest river edge.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Channels {
     /// Grid cell size in degrees, rows (from 90°S) and columns (from 180°W).
     cell_deg: f64,
     rows: usize,
     cols: usize,
+    /// Farthest a point still gives its width, in degrees of arc.
+    reach_deg: f64,
     /// Points of cell `i` are `points[start[i]..start[i + 1]]`.
     start: Vec<u32>,
     points: Vec<([f64; 3], f32)>,
 }
 
 impl Channels {
-    /// Channels of river vertices at unit directions `points` with their widths (m); `reach_m`
-    /// is the longest distance at which a vertex still takes a point's width (the base mesh's
-    /// longest river edge) and `radius` the planet's. `None` without points.
-    pub fn new(points: &[(DVec3, f32)], reach_m: f64, radius: f64) -> Option<Channels> {
+    /// Channels of river vertices at unit directions `points` with their widths (m); `cell_m`
+    /// is the grid's cell size (a typical base-mesh river edge), `reach_m` the farthest a
+    /// vertex still takes a point's width (the longest one), `radius` the planet's. `None`
+    /// without points.
+    pub fn new(points: &[(DVec3, f32)], cell_m: f64, reach_m: f64, radius: f64) -> Option<Channels> {
         if points.is_empty() {
             return None;
         }
-        let cell_deg = (reach_m / radius).to_degrees().clamp(0.01, 30.0);
+        let cell_deg = (cell_m / radius).to_degrees().clamp(0.01, 30.0);
         let rows = (180.0 / cell_deg).ceil() as usize;
         let cols = (360.0 / cell_deg).ceil() as usize;
-        let mut grid = Channels { cell_deg, rows, cols, start: vec![0; rows * cols + 1], points: Vec::new() };
+        let reach_deg = (reach_m / radius).to_degrees().max(cell_deg);
+        let mut grid =
+            Channels { cell_deg, rows, cols, reach_deg, start: vec![0; rows * cols + 1], points: Vec::new() };
         let cells: Vec<usize> = points.iter().map(|(d, _)| grid.cell_of(*d)).collect();
         for &c in &cells {
             grid.start[c + 1] += 1;
@@ -63,33 +69,41 @@ impl Channels {
     }
 
     /// Width (m) of the base-mesh river vertex nearest to `dir` (a unit direction), if one lies
-    /// within a grid cell of it; ties go to the first stored.
+    /// within the reach given to [`Channels::new`]; ties go to the first stored.
     pub fn width_at(&self, dir: DVec3) -> Option<f32> {
         let (row, col) = self.row_col(dir);
-        // Columns narrow towards the poles: search as many as span one cell's width there.
         let lat = (row as f64 + 0.5) * self.cell_deg - 90.0;
-        let edge_lat = lat.abs() + self.cell_deg;
-        let span = if edge_lat >= 89.0 {
-            self.cols
-        } else {
-            ((1.0 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
-        };
-        let max_chord = (self.cell_deg.to_radians() * 0.5).sin() * 2.0;
+        let chord = |deg: f64| (deg.to_radians() * 0.5).sin() * 2.0;
+        let max_chord = chord(self.reach_deg);
         let mut best: Option<(f64, f32)> = None;
-        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+        let rings = (self.reach_deg / self.cell_deg).ceil() as usize + 1;
+        for k in 1..=rings {
+            // Rows within k cells; columns spanning k cells' width at the widest latitude.
+            let edge_lat = lat.abs() + (k as f64 + 0.5) * self.cell_deg;
+            let span = if edge_lat >= 89.0 {
+                self.cols
+            } else {
+                ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
+            };
             let cols: Vec<usize> = if 2 * span + 1 >= self.cols {
                 (0..self.cols).collect()
             } else {
-                (0..=2 * span).map(|k| (col + self.cols + k - span) % self.cols).collect()
+                (0..=2 * span).map(|j| (col + self.cols + j - span) % self.cols).collect()
             };
-            for c in cols {
-                let cell = r * self.cols + c;
-                for &(p, w) in &self.points[self.start[cell] as usize..self.start[cell + 1] as usize] {
-                    let d = DVec3::from_array(p).distance(dir);
-                    if d <= max_chord && best.is_none_or(|(bd, _)| d < bd) {
-                        best = Some((d, w));
+            for r in row.saturating_sub(k)..=(row + k).min(self.rows - 1) {
+                for &c in &cols {
+                    let cell = r * self.cols + c;
+                    for &(p, w) in &self.points[self.start[cell] as usize..self.start[cell + 1] as usize] {
+                        let d = DVec3::from_array(p).distance(dir);
+                        if d <= max_chord && best.is_none_or(|(bd, _)| d < bd) {
+                            best = Some((d, w));
+                        }
                     }
                 }
+            }
+            // Any cell not yet searched lies at least k - 1 cells away.
+            if best.is_some_and(|(d, _)| d <= chord((k - 1) as f64 * self.cell_deg)) {
+                break;
             }
         }
         best.map(|(_, w)| w)
@@ -110,7 +124,7 @@ mod tests {
     fn the_nearest_river_vertex_gives_the_width() {
         let r = 6_371_000.0;
         let pts = [(direction(0.0, 0.0), 100.0), (direction(0.0, 1.0), 300.0), (direction(60.0, 179.9), 7.0)];
-        let c = Channels::new(&pts, 150_000.0, r).unwrap();
+        let c = Channels::new(&pts, 50_000.0, 150_000.0, r).unwrap();
         assert_eq!(c.width_at(direction(0.0, 0.3)), Some(100.0));
         assert_eq!(c.width_at(direction(0.2, 0.7)), Some(300.0));
         // Across the antimeridian, and nothing where no river is near.
@@ -118,8 +132,13 @@ mod tests {
         assert_eq!(c.width_at(direction(30.0, 30.0)), None);
         assert_eq!(c.width_at(direction(0.0, 3.0)), None);
         // Near a pole every column is searched.
-        let polar = Channels::new(&[(direction(89.5, 10.0), 5.0)], 150_000.0, r).unwrap();
+        let polar = Channels::new(&[(direction(89.5, 10.0), 5.0)], 50_000.0, 150_000.0, r).unwrap();
         assert_eq!(polar.width_at(direction(89.5, -170.0)), Some(5.0));
-        assert!(Channels::new(&[], 1.0, r).is_none());
+        assert!(Channels::new(&[], 1.0, 1.0, r).is_none());
+        // The nearest point wins even when a farther one lies in a nearer cell's search.
+        let pair = [(direction(0.0, 0.0), 1.0), (direction(0.0, 0.9), 2.0)];
+        let grid = Channels::new(&pair, 20_000.0, 150_000.0, r).unwrap();
+        assert_eq!(grid.width_at(direction(0.0, 0.6)), Some(2.0));
+        assert_eq!(grid.width_at(direction(0.0, 0.4)), Some(1.0));
     }
 }

@@ -161,7 +161,17 @@ impl Server {
 pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<Server, String> {
     let store = Store::open(config.store_url.as_deref(), &config.data_dir)?;
     let mut planets = std::collections::BTreeMap::new();
-    for id in store.ids().await.map_err(|e| format!("cannot list stored planets: {e}"))? {
+    let listing = store.ids().await.map_err(|e| {
+        let place = config.store_url.clone().unwrap_or_else(|| config.data_dir.display().to_string());
+        let hint = if place.starts_with("s3://") {
+            " (check that the bucket exists and that AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY, AWS_REGION \
+             and, for a store that is not AWS, AWS_ENDPOINT are right)"
+        } else {
+            ""
+        };
+        format!("cannot list the stored planets in {place}{hint}: {e}")
+    })?;
+    for id in listing {
         match store.input(&id).await {
             Ok(Some(input)) => {
                 planets.insert(id.clone(), Arc::new(Entry::new(id, input, None)));
