@@ -100,15 +100,7 @@ impl Server {
     fn start() -> Server {
         let data = TempDir(std::env::temp_dir().join(format!("riverworld-http-load-{}", std::process::id())));
         let _ = std::fs::remove_dir_all(&data.0);
-        let mut child = Command::new(env!("CARGO_BIN_EXE_riverworld"))
-            .args(["serve", "--addr", "127.0.0.1:0", "--data"])
-            .arg(&data.0)
-            .env("RUST_LOG", "warn")
-            .env_remove("RIVERWORLD_API_TOKEN")
-            .stdout(Stdio::null())
-            .stderr(Stdio::piped())
-            .spawn()
-            .expect("start riverworld serve");
+        let mut child = serve("127.0.0.1:0", &data.0).stderr(Stdio::piped()).spawn().expect("start riverworld serve");
         let stderr = child.stderr.take().expect("stderr");
         let (tx, rx) = std::sync::mpsc::channel();
         std::thread::spawn(move || {
@@ -126,6 +118,18 @@ impl Server {
     fn peak_rss_mib(&self) -> f64 {
         peak_rss_mib(self.child.id())
     }
+}
+
+/// `riverworld serve` on `addr` over the data directory `data`: logs at `warn`, no API token,
+/// stdout dropped (the caller decides what becomes of stderr).
+fn serve(addr: &str, data: &std::path::Path) -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_riverworld"));
+    cmd.args(["serve", "--addr", addr, "--data"])
+        .arg(data)
+        .env("RUST_LOG", "warn")
+        .env_remove("RIVERWORLD_API_TOKEN")
+        .stdout(Stdio::null());
+    cmd
 }
 
 /// Peak resident set size so far of process `pid`, MiB (NaN if it is gone).

@@ -26,12 +26,7 @@ struct Replica {
 
 impl Replica {
     fn start(port: u16, data: &std::path::Path) -> Replica {
-        let child = Command::new(env!("CARGO_BIN_EXE_riverworld"))
-            .args(["serve", "--addr", &format!("127.0.0.1:{port}"), "--data"])
-            .arg(data)
-            .env("RUST_LOG", "warn")
-            .env_remove("RIVERWORLD_API_TOKEN")
-            .stdout(Stdio::null())
+        let child = super::serve(&format!("127.0.0.1:{port}"), data)
             .stderr(Stdio::null())
             .spawn()
             .expect("start riverworld serve");

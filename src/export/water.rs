@@ -84,7 +84,9 @@ pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
                     .iter()
                     .filter(|&&u| wet(u as usize))
                     .map(|&u| {
-                        let (river, water) = (&vertices[u as usize], own(u as usize));
+                        // A wet corner's level is its own water (`level` holds it until the
+                        // offers are merged below).
+                        let (river, water) = (&vertices[u as usize], level[u as usize]);
                         match half[u as usize] {
                             None => water,
                             Some(h) => {

@@ -85,13 +85,16 @@ impl Channels {
             } else {
                 ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
             };
-            let cols: Vec<usize> = if 2 * span + 1 >= self.cols {
-                (0..self.cols).collect()
-            } else {
-                (0..=2 * span).map(|j| (col + self.cols + j - span) % self.cols).collect()
-            };
+            let all = 2 * span + 1 >= self.cols;
+            let cols = (0..if all { self.cols } else { 2 * span + 1 }).map(|j| {
+                if all {
+                    j
+                } else {
+                    (col + self.cols + j - span) % self.cols
+                }
+            });
             for r in row.saturating_sub(k)..=(row + k).min(self.rows - 1) {
-                for &c in &cols {
+                for c in cols.clone() {
                     let cell = r * self.cols + c;
                     for &(p, w) in &self.points[self.start[cell] as usize..self.start[cell + 1] as usize] {
                         let d = DVec3::from_array(p).distance(dir);
