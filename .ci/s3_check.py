@@ -1,17 +1,23 @@
 #!/usr/bin/env python3
-"""The S3 store against a real S3-protocol server: moto's standalone server (PyPI `moto[server]`,
-chosen because it installs from the package registry in seconds, needs no container, and speaks
-the S3 REST protocol that object_store's AmazonS3 client uses) on a loopback port.
+"""The S3 store against a real S3-protocol server: s3s-fs (crates.io `s3s-fs`, the file-system
+backend of the s3s S3 server library) on a loopback port. Chosen over moto's server because it
+checks every request's SigV4 signature against its access and secret key, so a wrong credential
+is refused as it is by AWS (moto accepts any key unless its IAM emulation is on, which then
+refuses object_store's signatures too), and it needs no container. Its objects are plain files
+under its root directory, so what a killed replica left behind is read straight from the disk.
 
-    python3 .ci/s3_check.py target/release/riverworld   # a binary built with --features s3
+    cargo install s3s-fs@0.14.1 --features binary --locked --root target/s3s
+    python3 .ci/s3_check.py target/release/riverworld target/s3s/bin/s3s-fs   # binary with --features s3
 
 Checks: two replicas on one bucket prefix; a planet (with an uploaded map) created through one is
 listed and served by the other with the same bytes; a replica killed with SIGKILL while a map
 upload streams in leaves every stored planet complete (request.json only after its map) or
 absent; a delete through one is gone from both; credentials come from the standard AWS_*
-variables; a missing bucket stops the server at start with a message naming it.
+variables; a wrong secret key and a missing bucket stop the server at start with a message
+naming the problem.
 """
 import json
+import shutil
 import os
 import signal
 import socket
@@ -24,6 +30,8 @@ import urllib.error
 import urllib.request
 
 BIN = sys.argv[1] if len(sys.argv) > 1 else "target/release/riverworld"
+S3S = sys.argv[2] if len(sys.argv) > 2 else "target/s3s/bin/s3s-fs"
+ACCESS_KEY, SECRET_KEY = "AKIARIVERWORLDCHECK", "riverworld-check-secret"
 
 
 def free_port():
@@ -54,15 +62,19 @@ def wait_for(pred, what, secs=120):
 
 
 def main():
-    moto_port = free_port()
-    endpoint = f"http://127.0.0.1:{moto_port}"
-    moto = subprocess.Popen(["moto_server", "-H", "127.0.0.1", "-p", str(moto_port)],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    procs = [moto]
+    s3_port = free_port()
+    endpoint = f"http://127.0.0.1:{s3_port}"
+    root = tempfile.mkdtemp(prefix="riverworld-s3-")
+    bucket_dir = os.path.join(root, "riverworld")
+    os.mkdir(bucket_dir)  # s3s-fs: a bucket is a directory under its root
+    server = subprocess.Popen([S3S, "--host", "127.0.0.1", "--port", str(s3_port), "--access-key", ACCESS_KEY,
+                               "--secret-key", SECRET_KEY, root], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    procs = [server]
     try:
-        wait_for(lambda: http("GET", endpoint + "/")[0] == 200, "moto_server")
-        assert http("PUT", endpoint + "/riverworld")[0] == 200, "create bucket"
-        env = dict(os.environ, AWS_ACCESS_KEY_ID="test", AWS_SECRET_ACCESS_KEY="test", AWS_REGION="us-east-1",
+        wait_for(lambda: socket.create_connection(("127.0.0.1", s3_port), timeout=1).close() or True, "s3s-fs")
+        # Unsigned requests are refused: the server checks credentials.
+        assert http("GET", endpoint + "/riverworld")[0] == 403, "s3s-fs accepts unsigned requests"
+        env = dict(os.environ, AWS_ACCESS_KEY_ID=ACCESS_KEY, AWS_SECRET_ACCESS_KEY=SECRET_KEY, AWS_REGION="us-east-1",
                    AWS_ENDPOINT=endpoint, AWS_ALLOW_HTTP="true", RUST_LOG="warn")
         env.pop("RIVERWORLD_API_TOKEN", None)
         store = "s3://riverworld/planets"
@@ -122,14 +134,13 @@ def main():
         ra.send_signal(signal.SIGKILL)
         ra.wait()
         t.join(10)
-        import boto3  # installed with moto
-        s3 = boto3.client("s3", endpoint_url=endpoint, aws_access_key_id="test", aws_secret_access_key="test",
-                          region_name="us-east-1")
-        keys = [o["Key"] for o in s3.list_objects_v2(Bucket="riverworld").get("Contents", [])]
+        keys = set()
+        for dirpath, _, files in os.walk(bucket_dir):
+            keys.update(os.path.relpath(os.path.join(dirpath, f), bucket_dir) for f in files)
         with_map = 0
-        for k in keys:
+        for k in sorted(keys):
             if k.endswith("request.json"):
-                stored = json.loads(s3.get_object(Bucket="riverworld", Key=k)["Body"].read())
+                stored = json.load(open(os.path.join(bucket_dir, k)))
                 if stored.get("map"):
                     assert k.replace("request.json", "map.bin") in keys, f"{k} without its map"
                     with_map += 1
@@ -150,17 +161,26 @@ def main():
         assert pid not in ids(c) and http("GET", f"{c}/v1/planets/{pid}")[0] == 404
         print("s3_check: a planet deleted through one replica is gone for a new one")
 
-        # A missing bucket stops the server at start, naming the problem.
-        bad = subprocess.run([BIN, "serve", "--addr", f"127.0.0.1:{free_port()}", "--store", "s3://no-such-bucket/p"],
-                             env=env, capture_output=True, text=True, timeout=60)
-        assert bad.returncode != 0 and "no-such-bucket" in bad.stderr and "NoSuchBucket" in bad.stderr, bad.stderr
-        assert "check that the bucket exists" in bad.stderr, bad.stderr
-        print(f"s3_check: a missing bucket stops the server (exit {bad.returncode}): {bad.stderr.strip()[:200]}...")
+        # A wrong secret key and a missing bucket stop the server at start, naming the problem.
+        def refused(store, what, hint, **overrides):
+            bad = subprocess.run([BIN, "serve", "--addr", f"127.0.0.1:{free_port()}", "--store", store],
+                                 env=dict(env, **overrides), capture_output=True, text=True, timeout=60)
+            assert bad.returncode != 0, f"{what}: the server started"
+            assert hint in bad.stderr, (hint, bad.stderr)
+            print(f"s3_check: {what} stops the server (exit {bad.returncode}): {bad.stderr.strip()[:150]}...")
+            return bad.stderr
+        credentials = "the store refused the credentials: check AWS_ACCESS_KEY_ID and AWS_SECRET_ACCESS_KEY"
+        err = refused(store, "a wrong secret key", credentials, AWS_SECRET_ACCESS_KEY="not-the-secret")
+        assert "SignatureDoesNotMatch" in err, err
+        refused(store, "an unknown access key", credentials, AWS_ACCESS_KEY_ID="AKIANOSUCHKEY")
+        err = refused("s3://no-such-bucket/p", "a missing bucket", "the bucket does not exist")
+        assert "no-such-bucket" in err and "NoSuchBucket" in err, err
     finally:
         for p in procs:
             if p.poll() is None:
                 p.kill()
                 p.wait()
+        shutil.rmtree(root, ignore_errors=True)
 
 
 if __name__ == "__main__":

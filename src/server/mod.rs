@@ -156,6 +156,23 @@ impl Server {
     }
 }
 
+/// What to check when an S3 store cannot be listed at start, from the store's answer.
+fn store_hint(place: &str, error: &str) -> &'static str {
+    if !place.starts_with("s3://") {
+        ""
+    } else if error.contains("NoSuchBucket") {
+        " (the bucket does not exist: create it, or correct the bucket in --store)"
+    } else if ["SignatureDoesNotMatch", "InvalidAccessKeyId", "AccessDenied", "403 Forbidden"]
+        .iter()
+        .any(|code| error.contains(code))
+    {
+        " (the store refused the credentials: check AWS_ACCESS_KEY_ID and AWS_SECRET_ACCESS_KEY)"
+    } else {
+        " (check that the bucket exists and that AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY, AWS_REGION \
+         and, for a store that is not AWS, AWS_ENDPOINT are right)"
+    }
+}
+
 /// Opens the store, lists the stored planets (as `queued`: they are rebuilt on first access),
 /// starts the built-in planet's build and serves on `listener` until [`Server::shutdown`].
 pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<Server, String> {
@@ -163,13 +180,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     let mut planets = std::collections::BTreeMap::new();
     let listing = store.ids().await.map_err(|e| {
         let place = config.store_url.clone().unwrap_or_else(|| config.data_dir.display().to_string());
-        let hint = if place.starts_with("s3://") {
-            " (check that the bucket exists and that AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY, AWS_REGION \
-             and, for a store that is not AWS, AWS_ENDPOINT are right)"
-        } else {
-            ""
-        };
-        format!("cannot list the stored planets in {place}{hint}: {e}")
+        format!("cannot list the stored planets in {place}{}: {e}", store_hint(&place, &e.to_string()))
     })?;
     for id in listing {
         match store.input(&id).await {
@@ -377,4 +388,17 @@ async fn metrics_text(State(state): State<Arc<AppState>>) -> Response {
 
 async fn openapi() -> impl IntoResponse {
     plain("application/yaml", OPENAPI)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_store_that_cannot_be_listed_says_what_to_check() {
+        let s3 = "s3://bucket/prefix";
+        let refused = "Server returned non-2xx status code: 403 Forbidden: <Code>SignatureDoesNotMatch</Code>";
+        assert!(super::store_hint(s3, refused).contains("refused the credentials"));
+        assert!(super::store_hint(s3, "<Code>NoSuchBucket</Code>").contains("bucket does not exist"));
+        assert!(super::store_hint(s3, "connection refused").contains("AWS_ENDPOINT"));
+        assert_eq!(super::store_hint("/var/lib/riverworld", refused), "");
+    }
 }
