@@ -11,7 +11,9 @@ use glam::DVec3;
 
 /// Widths of the base mesh's river vertices, bucketed on a latitude/longitude grid whose cells
 /// are about as wide as a typical base-mesh river edge; a lookup searches outwards from its
-/// cell until no unsearched cell can hold a nearer point, up to the longest river edge.
+/// cell until no unsearched cell can hold a nearer point, up to the longest river edge. Only
+/// cells that hold points are stored (sorted by cell number), so a regional planet's fine grid
+/// costs its rivers' size, not the globe's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Channels {
     /// Grid cell size in degrees, rows (from 90°S) and columns (from 180°W).
@@ -20,7 +22,9 @@ pub struct Channels {
     cols: usize,
     /// Farthest a point still gives its width, in degrees of arc.
     reach_deg: f64,
-    /// Points of cell `i` are `points[start[i]..start[i + 1]]`.
+    /// Numbers (`row * cols + col`) of the cells that hold points, ascending.
+    cells: Vec<u64>,
+    /// Points of `cells[i]` are `points[start[i]..start[i + 1]]`.
     start: Vec<u32>,
     points: Vec<([f64; 3], f32)>,
 }
@@ -39,20 +43,22 @@ impl Channels {
         let cols = (360.0 / cell_deg).ceil() as usize;
         let reach_deg = (reach_m / radius).to_degrees().max(cell_deg);
         let mut grid =
-            Channels { cell_deg, rows, cols, reach_deg, start: vec![0; rows * cols + 1], points: Vec::new() };
-        let cells: Vec<usize> = points.iter().map(|(d, _)| grid.cell_of(*d)).collect();
-        for &c in &cells {
-            grid.start[c + 1] += 1;
+            Channels { cell_deg, rows, cols, reach_deg, cells: Vec::new(), start: vec![0], points: Vec::new() };
+        let mut sorted: Vec<(u64, usize)> =
+            points.iter().enumerate().map(|(i, (d, _))| (grid.cell_of(*d), i)).collect();
+        sorted.sort_unstable();
+        grid.points.reserve_exact(points.len());
+        for (n, &(cell, i)) in sorted.iter().enumerate() {
+            if grid.cells.last() != Some(&cell) {
+                if n > 0 {
+                    grid.start.push(n as u32);
+                }
+                grid.cells.push(cell);
+            }
+            let (d, w) = points[i];
+            grid.points.push((d.normalize().to_array(), w));
         }
-        for i in 0..rows * cols {
-            grid.start[i + 1] += grid.start[i];
-        }
-        let mut fill = grid.start.clone();
-        grid.points = vec![([0.0; 3], 0.0); points.len()];
-        for (&(d, w), &c) in points.iter().zip(&cells) {
-            grid.points[fill[c] as usize] = (d.normalize().to_array(), w);
-            fill[c] += 1;
-        }
+        grid.start.push(points.len() as u32);
         Some(grid)
     }
 
@@ -63,9 +69,17 @@ impl Channels {
         (row, col)
     }
 
-    fn cell_of(&self, dir: DVec3) -> usize {
+    fn cell_of(&self, dir: DVec3) -> u64 {
         let (r, c) = self.row_col(dir);
-        r * self.cols + c
+        (r * self.cols + c) as u64
+    }
+
+    /// The points of row `r`'s cells in columns `c0..=c1`.
+    fn row_points(&self, r: usize, c0: usize, c1: usize) -> &[([f64; 3], f32)] {
+        let base = (r * self.cols) as u64;
+        let lo = self.cells.partition_point(|&c| c < base + c0 as u64);
+        let hi = self.cells.partition_point(|&c| c <= base + c1 as u64);
+        &self.points[self.start[lo] as usize..self.start[hi] as usize]
     }
 
     /// Width (m) of the base-mesh river vertex nearest to `dir` (a unit direction), if one lies
@@ -85,18 +99,18 @@ impl Channels {
             } else {
                 ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
             };
-            let all = 2 * span + 1 >= self.cols;
-            let cols = (0..if all { self.cols } else { 2 * span + 1 }).map(|j| {
-                if all {
-                    j
-                } else {
-                    (col + self.cols + j - span) % self.cols
-                }
-            });
+            // Column ranges without wrapping: all, one, or two across the antimeridian.
+            let first = (col + self.cols - span % self.cols) % self.cols;
+            let ranges = if 2 * span + 1 >= self.cols {
+                [(0, self.cols - 1), (1, 0)]
+            } else if first + 2 * span < self.cols {
+                [(first, first + 2 * span), (1, 0)]
+            } else {
+                [(first, self.cols - 1), (0, first + 2 * span - self.cols)]
+            };
             for r in row.saturating_sub(k)..=(row + k).min(self.rows - 1) {
-                for c in cols.clone() {
-                    let cell = r * self.cols + c;
-                    for &(p, w) in &self.points[self.start[cell] as usize..self.start[cell + 1] as usize] {
+                for &(c0, c1) in ranges.iter().filter(|(c0, c1)| c0 <= c1) {
+                    for &(p, w) in self.row_points(r, c0, c1) {
                         let d = DVec3::from_array(p).distance(dir);
                         if d <= max_chord && best.is_none_or(|(bd, _)| d < bd) {
                             best = Some((d, w));
@@ -114,7 +128,7 @@ impl Channels {
 
     /// Bytes held.
     pub fn bytes(&self) -> usize {
-        self.start.len() * 4 + self.points.len() * std::mem::size_of::<([f64; 3], f32)>()
+        self.cells.len() * 8 + self.start.len() * 4 + self.points.len() * std::mem::size_of::<([f64; 3], f32)>()
     }
 }
 
@@ -143,5 +157,11 @@ mod tests {
         let grid = Channels::new(&pair, 20_000.0, 150_000.0, r).unwrap();
         assert_eq!(grid.width_at(direction(0.0, 0.6)), Some(2.0));
         assert_eq!(grid.width_at(direction(0.0, 0.4)), Some(1.0));
+        // A regional planet's fine grid (0.01° cells: 648 million) holds only its occupied cells.
+        let fine: Vec<_> = (0..1000).map(|i| (direction(36.4, -84.2 + i as f64 * 1e-4), i as f32)).collect();
+        let grid = Channels::new(&fine, 100.0, 2_000.0, r).unwrap();
+        assert!(grid.bytes() < 100_000, "{} bytes", grid.bytes());
+        assert_eq!(grid.width_at(direction(36.4001, -84.2 + 500.2e-4)), Some(500.0));
+        assert_eq!(grid.width_at(direction(36.5, -84.2)), None);
     }
 }
