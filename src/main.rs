@@ -210,6 +210,11 @@ struct ServeArgs {
     /// Largest max_faces a view.glb request may ask for (at most 2^30).
     #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
     max_faces_cap: u64,
+    /// Most faces the base mesh of a planet created by POST may have, estimated from its
+    /// base_faces and its map's size before it is accepted (kept within --max-faces-cap).
+    #[arg(long, default_value_t = riverworld::server::DEFAULT_MAX_PLANET_FACES as u64,
+          value_parser = clap::value_parser!(u64).range(8..=MAX_MESH_FACES))]
+    max_planet_faces: u64,
     /// Seconds before a request is answered 503 timeout.
     #[arg(long, default_value_t = 120, value_parser = clap::value_parser!(u64).range(1..))]
     timeout_s: u64,
@@ -269,6 +274,7 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         body_limit: args.body_limit_mb as usize * (1 << 20),
         cors_origin: args.cors_origin,
         max_faces_cap: args.max_faces_cap as usize,
+        max_planet_faces: args.max_planet_faces as usize,
         request_timeout: std::time::Duration::from_secs(args.timeout_s),
         default_planet: !args.no_default_planet,
         build_delay: std::time::Duration::ZERO,

@@ -191,24 +191,48 @@ async fn configured_caps_bound_faces_raster_width_and_map_pixels() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_planet_over_the_default_budget_is_viewed_whole_by_default() {
-    // A cap below the base mesh: views without max_faces give the base mesh (the coarsest view
-    // there is), views that ask for less are refused.
-    let s = start(Config { max_faces_cap: 100, ..config(&scratch("over-default")) }).await;
+async fn a_planet_over_the_face_limits_is_refused_before_it_is_stored() {
+    // Admission by the base mesh's estimated faces: over --max-planet-faces, and over
+    // --max-faces-cap (every view holds at least the base mesh), nothing is stored or built.
+    let dir = scratch("planet-faces");
+    let s = start(Config { max_planet_faces: 20_000, ..config(&dir) }).await;
+    let err = expect_error(s.post_json(r#"{"seed": 5, "params": {"base_faces": 40000}}"#).await, 422, "too_large");
+    let err = err.await;
+    assert_eq!(err["field"], "params.base_faces");
+    assert!(err["message"].as_str().unwrap().contains("at most 20000 faces"), "{err}");
+    // A map whose refinement makes the planet large names the map: the shipped land mask asks
+    // for ~350 km edges over the globe, about 65,000 faces.
+    let mask = std::fs::read("maps/earth_landmask_ne10m_1024x512.png").unwrap();
+    let err = expect_error(s.post_map(mask, &[("params", FAST)]).await, 422, "too_large").await;
+    assert_eq!(err["field"], "map");
+    let listed: Value = s.get("/v1/planets").await.json().await.unwrap();
+    assert_eq!(listed["planets"].as_array().unwrap().len(), 0, "{listed}");
+    assert!(std::fs::read_dir(dir.join("planets")).map_or(true, |mut d| d.next().is_none()));
+    let ok = s.post_json(r#"{"seed": 5, "params": {"base_faces": 2000}}"#).await;
+    assert_eq!(ok.status().as_u16(), 202);
+    s.stop().await;
+
+    let s = start(Config { max_faces_cap: 100, ..config(&scratch("over-cap")) }).await;
+    let err = expect_error(s.post_json(r#"{"seed": 5, "params": {"base_faces": 200}}"#).await, 422, "too_large");
+    assert_eq!(err.await["field"], "params.base_faces");
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_stored_planet_above_a_lowered_face_cap_has_no_view() {
+    // Created under one cap, served after a restart under a lower one: its views are refused
+    // by name instead of exceeding the cap.
+    let dir = scratch("lowered-cap");
+    let s = start(config(&dir)).await;
     let id = ready_planet(&s, r#"{"seed": 5, "params": {"base_faces": 200}}"#).await;
-    let rec: serde_json::Value = s.get(&format!("/v1/planets/{id}")).await.json().await.unwrap();
+    s.stop().await;
+    let s = start(Config { max_faces_cap: 100, ..config(&dir) }).await;
+    let rec = s.wait_ready(&id).await;
     let base_faces = rec["stats"]["faces"].as_u64().unwrap();
     assert!(base_faces > 100, "{rec}");
     let view = format!("/v1/planets/{id}/view.glb?eye=0,0,2e7&target=0,0,0&width=320&height=180");
-    let res = s.get(&view).await;
-    assert_eq!(res.status().as_u16(), 200);
-    let glb = res.bytes().await.unwrap();
-    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
-    let json: serde_json::Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
-    let indices = json["meshes"][0]["primitives"][0]["indices"].as_u64().unwrap() as usize;
-    assert_eq!(json["accessors"][indices]["count"].as_u64().unwrap(), 3 * base_faces);
-    let err = expect_error(s.get(&format!("{view}&max_faces=100")).await, 422, "invalid_parameter").await;
+    let err = expect_error(s.get(&view).await, 422, "too_large").await;
     assert_eq!(err["field"], "max_faces");
-    assert!(err["message"].as_str().unwrap().contains(&format!("below the {base_faces} faces")), "{err}");
+    assert!(err["message"].as_str().unwrap().contains(&format!("has {base_faces} faces")), "{err}");
     s.stop().await;
 }

@@ -129,6 +129,39 @@ pub fn map_edge_length(map: &Map, radius: f64) -> f64 {
     (per_edge * dlat.to_radians() * radius).max(floor)
 }
 
+/// An upper estimate of the faces of a planet's base mesh, known before it is built (the
+/// server admits planets by it). The base shape's faces outside a map's bounds, and inside them
+/// the finer of the base shape and the refinement the map asks for ([`map_edge_length`]), each
+/// grown by the rivers' and mountains' vertices that land adds. Measured against builds of the
+/// shipped maps and random planets (test `the_face_estimate_bounds_the_build`), it is 1.2-2.2x
+/// the faces a build gives.
+pub fn estimated_faces(p: &Params, map: Option<&Map>) -> usize {
+    // Faces of a shape refined to edge L over area A: about 4 A / L² (triangles of L²/4);
+    // refinement leaves edges between L/2 and L, so up to 16 A / L².
+    const REFINED_PER_AREA: f64 = 16.0;
+    // Growth of the faces by rivers and mountains: up to x4.65 over land (paper §4.3), x1.15
+    // over sea (coasts).
+    const SEA_GROWTH: f64 = 1.15;
+    const LAND_GROWTH: f64 = 3.5;
+    let base = f64::from(p.base_faces);
+    let random_growth = SEA_GROWTH + LAND_GROWTH * p.land_percent / 100.0;
+    let Some(map) = map else { return (base * random_growth).ceil() as usize };
+    let r = p.radius_m;
+    let target = map_edge_length(map, r);
+    let b = map.bounds;
+    // A regional elevation map is widened by its shore (see `build_planet`).
+    let pad =
+        if map.kind == MapKind::Elevation && !b.is_global() { (SHORE_EDGES * target / r).to_degrees() } else { 0.0 };
+    let (south, north) = ((b.south - pad).max(-90.0), (b.north + pad).min(90.0));
+    let span = (b.east - b.west + 2.0 * pad).min(360.0).to_radians();
+    let area = span * (north.to_radians().sin() - south.to_radians().sin()) * r * r;
+    let share = (area / (4.0 * std::f64::consts::PI * r * r)).min(1.0);
+    let inside = (base * share).max(REFINED_PER_AREA * area / (target * target));
+    let growth = SEA_GROWTH + LAND_GROWTH * map.land_fraction();
+    // Outside the bounds the planet is sea.
+    (base * (1.0 - share) * SEA_GROWTH + inside * growth).ceil() as usize
+}
+
 /// Builds the base mesh of a planet (§4). `progress` receives a stage name and a fraction.
 pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> Result<Planet, BuildError> {
     let start = Instant::now();

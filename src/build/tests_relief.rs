@@ -25,6 +25,44 @@ fn earth() -> Option<&'static Planet> {
     EARTH.get_or_init(|| from_map("maps/earth_etopo5_1024x512.tif")).as_ref()
 }
 
+/// The planet of the shipped Jacksboro DEM (~90 m, land to its edges), built once.
+fn jacksboro() -> Option<&'static Planet> {
+    static JACKSBORO: std::sync::OnceLock<Option<Planet>> = std::sync::OnceLock::new();
+    JACKSBORO.get_or_init(|| from_map("maps/region_jacksboro_tn_403x344.tif")).as_ref()
+}
+
+/// The estimate the server admits planets by is above what builds give, and not far above: a
+/// random planet, a global continent bitmap, the global DEM and a regional DEM.
+#[test]
+fn the_face_estimate_bounds_the_build() {
+    let p = Params::default();
+    let mut cases = Vec::new();
+    for (seed, land_percent, base_faces) in [(7, 29.0, 5000), (8, 60.0, 5000), (9, 5.0, 20_000)] {
+        let p = Params { land_percent, base_faces, ..p.clone() };
+        let random = build_planet(&PlanetSpec { seed, params: p.clone(), map: None }, &mut |_, _| {}).unwrap();
+        cases.push(("random", estimated_faces(&p, None), random.stats.faces));
+    }
+    if let Ok(bytes) = std::fs::read("maps/earth_landmask_ne10m_1024x512.png") {
+        let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
+        let estimate = estimated_faces(&p, Some(&map));
+        let spec = PlanetSpec { seed: 42, params: p.clone(), map: Some(Arc::new(map)) };
+        cases.push(("land mask", estimate, build_planet(&spec, &mut |_, _| {}).unwrap().stats.faces));
+    }
+    for (name, path, planet) in [
+        ("Earth DEM", "maps/earth_etopo5_1024x512.tif", earth()),
+        ("Jacksboro", "maps/region_jacksboro_tn_403x344.tif", jacksboro()),
+    ] {
+        if let (Some(map), Some(planet)) = (map_file(path), planet) {
+            cases.push((name, estimated_faces(&p, Some(&map)), planet.stats.faces));
+        }
+    }
+    for (name, estimate, faces) in cases {
+        let ratio = estimate as f64 / faces as f64;
+        eprintln!("{name}: estimate {estimate}, built {faces} faces ({ratio:.2}x)");
+        assert!((1.0..2.5).contains(&ratio), "{name}: estimate {estimate} for {faces} faces");
+    }
+}
+
 fn check_fidelity(planet: &Planet, min_r: f64) {
     let f = planet.stats.map_fidelity.as_ref().expect("an elevation map reports its fidelity");
     assert!(f.r >= min_r, "{f:?}");
@@ -528,11 +566,11 @@ fn dems_below_the_base_mesh_keep_the_maps_relief() {
 /// -33 m and a median error of ~100 m in the outer ring of Jacksboro, whose map is 254-1,053 m).
 #[test]
 fn a_regional_map_keeps_its_heights_to_its_edges() {
-    let Some(planet) = from_map("maps/region_jacksboro_tn_403x344.tif") else { return };
+    let Some(planet) = jacksboro() else { return };
     let map = map_file("maps/region_jacksboro_tn_403x344.tif").unwrap();
     let b = map.bounds;
     let bbox = format!("{},{},{},{}", b.west, b.south, b.east, b.north);
-    let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet), Params::default()).unwrap();
+    let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
     let req = crate::export::dem::DemRequest::new(&bbox, 100, Some(86), 1 << 24).unwrap();
     let dem = tiles.dem(&req);
     let (w, h) = (req.width, req.height);

@@ -18,6 +18,8 @@ pub const ID_HEX: usize = 16;
 pub struct NewPlanet {
     pub input: StoredInput,
     pub map: Option<Bytes>,
+    /// Faces its base mesh will about have, at most ([`crate::build::estimated_faces`]).
+    pub estimated_faces: usize,
 }
 
 /// Id of a planet: the first 16 hex characters of SHA-256 over a canonical encoding of the
@@ -56,7 +58,9 @@ pub async fn read(req: Request<Body>, limits: MapLimits) -> Result<NewPlanet, Ap
             let text = std::str::from_utf8(&bytes)
                 .map_err(|_| ApiError::unprocessable("invalid_params", "body", "the body is not UTF-8"))?;
             let request = PlanetRequest::from_json(text).map_err(|e| ApiError::from_params(&e))?;
-            Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: None }, map: None })
+            let estimated_faces = crate::build::estimated_faces(&request.params, None);
+            let input = StoredInput { seed: request.seed, params: request.params, map: None };
+            Ok(NewPlanet { input, map: None, estimated_faces })
         }
         "multipart/form-data" => {
             let mp = Multipart::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
@@ -141,8 +145,10 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlane
     let kind = kind.unwrap_or(if is_tiff || range.is_some() { MapKind::Elevation } else { MapKind::Continents });
     let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
     check_land_and_sea(&decoded)?;
+    let estimated_faces = crate::build::estimated_faces(&request.params, Some(&decoded));
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
-    Ok(NewPlanet { input: StoredInput { seed: request.seed, params: request.params, map: Some(meta) }, map: Some(map) })
+    let input = StoredInput { seed: request.seed, params: request.params, map: Some(meta) };
+    Ok(NewPlanet { input, map: Some(map), estimated_faces })
 }
 
 /// Refuses at upload a map that leaves the planet no land, or (covering the whole globe) no sea,

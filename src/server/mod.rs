@@ -50,6 +50,9 @@ pub const OPENAPI: &str = include_str!("../../openapi.yaml");
 /// Default of [`Config::max_render_pixels`]: 4096 x 4096.
 pub const DEFAULT_MAX_RENDER_PIXELS: u64 = 4096 * 4096;
 
+/// Default of [`Config::max_planet_faces`].
+pub const DEFAULT_MAX_PLANET_FACES: usize = 1_000_000;
+
 /// How the server runs; `Default` matches `riverworld serve` without options.
 #[derive(Clone, Debug)]
 pub struct Config {
@@ -69,6 +72,9 @@ pub struct Config {
     pub cors_origin: String,
     /// Largest `max_faces` a view may ask for.
     pub max_faces_cap: usize,
+    /// Most faces an uploaded planet's base mesh may have (estimated before it is accepted;
+    /// also kept within `max_faces_cap`).
+    pub max_planet_faces: usize,
     /// Longest a request may take before it is answered 503 `timeout`.
     pub request_timeout: Duration,
     /// Whether to serve (and build at start) the built-in planet `earth`.
@@ -108,6 +114,7 @@ impl Default for Config {
             body_limit: 64 << 20,
             cors_origin: "*".into(),
             max_faces_cap: 2_000_000,
+            max_planet_faces: DEFAULT_MAX_PLANET_FACES,
             request_timeout: Duration::from_secs(120),
             default_planet: true,
             build_delay: Duration::ZERO,

@@ -34,6 +34,7 @@ pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> R
     if let Some(entry) = state.lookup(&id).await? {
         return Ok(existing(&state, &entry));
     }
+    admit_size(&new, state.config.max_planet_faces.min(state.config.max_faces_cap))?;
     let slot = state.pool.reserve().ok_or_else(queue_full)?;
     state.store.put(&id, &new.input, new.map).await.map_err(|e| {
         tracing::error!(%id, error = %e, "cannot store planet inputs");
@@ -52,6 +53,27 @@ pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> R
     tracing::info!(%id, "planet accepted");
     state.start_build(&entry, slot);
     Ok(with_location(json(StatusCode::ACCEPTED, &state.record(&entry)), &id))
+}
+
+/// 422 `too_large` for a planet whose base mesh would have more faces than `limit` (the
+/// server's `--max-planet-faces`, within its `--max-faces-cap`: every view of a planet holds
+/// at least its base mesh), naming `map` when the map's refinement is what makes it large.
+fn admit_size(new: &input::NewPlanet, limit: usize) -> Result<(), ApiError> {
+    if new.estimated_faces <= limit {
+        return Ok(());
+    }
+    let without_map = crate::build::estimated_faces(&new.input.params, None);
+    let field = if new.map.is_some() && without_map <= limit { "map" } else { "params.base_faces" };
+    Err(ApiError::unprocessable(
+        "too_large",
+        field,
+        format!(
+            "this planet's base mesh would have up to {} faces (estimated from base_faces and the map's size and \
+             bounds); this server builds planets of at most {limit} faces: lower base_faces, or send a map with \
+             coarser pixels or smaller bounds",
+            new.estimated_faces
+        ),
+    ))
 }
 
 /// The answer to a POST of inputs that are known already: 200 when ready (or failed), else 202.

@@ -150,6 +150,17 @@ pub fn budget_query(camera: String, max_faces: Option<usize>, cap: usize) -> Str
 /// `max_faces` (a 422 naming it below the base mesh), else [`DEFAULT_MAX_FACES`] within the
 /// server's `cap`, raised to the base mesh where that is larger.
 pub fn view_budget(planet: &Planet, asked: Option<usize>, cap: usize) -> Result<usize, ApiError> {
+    // A planet stored before the server's cap was lowered may be above it: no view of it fits.
+    if planet.mesh.faces.len() > cap {
+        return Err(ApiError::unprocessable(
+            "too_large",
+            "max_faces",
+            format!(
+                "this planet's base mesh has {} faces, its coarsest view; this server gives views of at most {cap}",
+                planet.mesh.faces.len()
+            ),
+        ));
+    }
     crate::adapt::face_budget(&planet.mesh, asked, DEFAULT_MAX_FACES.min(cap))
         .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string()))
 }
