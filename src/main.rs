@@ -198,6 +198,14 @@ struct ServeArgs {
     /// Build worker threads.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     workers: u32,
+    /// Builds of planets one client address may have queued or running; more answer 429
+    /// client_queue_full (0: no limit).
+    #[arg(long, default_value_t = 2)]
+    max_builds_per_client: usize,
+    /// Take the client's address for --max-builds-per-client from the last X-Forwarded-For
+    /// entry: only behind a proxy that sets it (HAProxy `option forwardfor`).
+    #[arg(long)]
+    trust_forwarded_for: bool,
     /// In-memory cache of built planets and rendered files, MiB.
     #[arg(long, default_value_t = 512)]
     cache_mb: usize,
@@ -270,6 +278,8 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         store_url: args.store,
         max_queue: args.max_queue,
         workers: args.workers as usize,
+        max_builds_per_client: args.max_builds_per_client,
+        trust_forwarded_for: args.trust_forwarded_for,
         cache_bytes: args.cache_mb.saturating_mul(1 << 20),
         body_limit: args.body_limit_mb as usize * (1 << 20),
         cors_origin: args.cors_origin,

@@ -254,8 +254,13 @@ async fn concurrent_requests_all_succeed() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_full_queue_answers_429_and_stores_nothing() {
     let dir = scratch("queue");
-    let cfg =
-        riverworld::server::Config { workers: 1, max_queue: 1, build_delay: Duration::from_secs(10), ..config(&dir) };
+    let cfg = riverworld::server::Config {
+        workers: 1,
+        max_queue: 1,
+        max_builds_per_client: 0,
+        build_delay: Duration::from_secs(10),
+        ..config(&dir)
+    };
     let s = start(cfg).await;
     created_id(s.post_json(r#"{"seed": 1, "params": {"base_faces": 200}}"#).await).await;
     created_id(s.post_json(r#"{"seed": 2, "params": {"base_faces": 200}}"#).await).await;
@@ -265,6 +270,39 @@ async fn a_full_queue_answers_429_and_stores_nothing() {
     let list: Value = s.get("/v1/planets").await.json().await.unwrap();
     assert_eq!(list["planets"].as_array().unwrap().len(), 2);
     assert_eq!(std::fs::read_dir(dir.join("planets")).unwrap().count(), 2);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn one_client_cannot_fill_the_build_queue() {
+    // Two builds per client address; behind a trusted proxy the address is the last
+    // X-Forwarded-For entry, so each client behind it has its own share.
+    let dir = scratch("per-client");
+    let cfg = riverworld::server::Config {
+        max_builds_per_client: 2,
+        trust_forwarded_for: true,
+        build_delay: Duration::from_secs(10),
+        ..config(&dir)
+    };
+    let s = start(cfg).await;
+    let post = |seed: u32, client: &'static str| {
+        s.client
+            .post(s.url("/v1/planets"))
+            .header("content-type", "application/json")
+            .header("x-forwarded-for", format!("203.0.113.9, {client}"))
+            .body(format!(r#"{{"seed": {seed}, "params": {{"base_faces": 200}}}}"#))
+            .send()
+    };
+    created_id(post(1, "198.51.100.1").await.unwrap()).await;
+    created_id(post(2, "198.51.100.1").await.unwrap()).await;
+    let res = post(3, "198.51.100.1").await.unwrap();
+    assert!(res.headers()["retry-after"].to_str().unwrap().parse::<u32>().unwrap() >= 1);
+    let err = expect_error(res, 429, "client_queue_full").await;
+    assert!(err["message"].as_str().unwrap().contains("2 planets of yours"), "{err}");
+    // Another client is served; a POST of a planet that exists takes no share.
+    created_id(post(3, "198.51.100.2").await.unwrap()).await;
+    assert_eq!(post(1, "198.51.100.1").await.unwrap().status().as_u16(), 202);
+    assert_eq!(std::fs::read_dir(dir.join("planets")).unwrap().count(), 3);
     s.stop().await;
 }
 

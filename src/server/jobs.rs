@@ -5,6 +5,8 @@
 //! [`Slot`] (so it can refuse with 429 before doing any work) and then submits the job into it.
 //! Dropping an unused slot gives the place back.
 
+use std::collections::HashMap;
+use std::net::IpAddr;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::{channel, Receiver, Sender};
 use std::sync::{Arc, Mutex};
@@ -97,6 +99,53 @@ impl Drop for Slot {
     }
 }
 
+/// Builds queued or running per client address, at most `limit` each (0: no limit), so that
+/// one client cannot fill the queue that every client shares.
+pub struct PerClient {
+    limit: usize,
+    counts: Mutex<HashMap<IpAddr, usize>>,
+}
+
+/// One client's place, held by its build until the build has run.
+pub struct ClientTicket {
+    owner: Arc<PerClient>,
+    ip: IpAddr,
+}
+
+impl PerClient {
+    pub fn new(limit: usize) -> Arc<PerClient> {
+        Arc::new(PerClient { limit, counts: Mutex::new(HashMap::new()) })
+    }
+
+    /// A place for one more build of `ip`'s, or None when it has `limit` already.
+    pub fn take(self: &Arc<Self>, ip: IpAddr) -> Option<ClientTicket> {
+        let mut counts = self.counts.lock().expect("clients lock");
+        let n = counts.entry(ip).or_insert(0);
+        if self.limit > 0 && *n >= self.limit {
+            return None;
+        }
+        *n += 1;
+        Some(ClientTicket { owner: Arc::clone(self), ip })
+    }
+
+    /// Builds of `ip`'s queued or running.
+    pub fn held(&self, ip: IpAddr) -> usize {
+        self.counts.lock().expect("clients lock").get(&ip).copied().unwrap_or(0)
+    }
+}
+
+impl Drop for ClientTicket {
+    fn drop(&mut self) {
+        let mut counts = self.owner.counts.lock().expect("clients lock");
+        if let Some(n) = counts.get_mut(&self.ip) {
+            *n -= 1;
+            if *n == 0 {
+                counts.remove(&self.ip);
+            }
+        }
+    }
+}
+
 fn work(rx: &Mutex<Receiver<Job>>) {
     loop {
         let job = match rx.lock().expect("queue lock").recv() {
@@ -136,5 +185,19 @@ mod tests {
         assert_eq!(pool.load(), 0);
         drop(pool.reserve().expect("room again"));
         assert_eq!(pool.load(), 0);
+    }
+
+    #[test]
+    fn each_client_holds_at_most_its_share() {
+        let clients = PerClient::new(2);
+        let (a, b): (IpAddr, IpAddr) = ("10.0.0.1".parse().unwrap(), "10.0.0.2".parse().unwrap());
+        let first = clients.take(a).unwrap();
+        let _second = clients.take(a).unwrap();
+        assert!(clients.take(a).is_none());
+        let _other = clients.take(b).expect("another client has its own share");
+        drop(first);
+        assert_eq!(clients.held(a), 1);
+        assert!(clients.take(a).is_some());
+        assert!(PerClient::new(0).take(a).is_some(), "0: no limit");
     }
 }

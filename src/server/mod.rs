@@ -64,6 +64,11 @@ pub struct Config {
     pub max_queue: usize,
     /// Build worker threads.
     pub workers: usize,
+    /// Builds one client address may have queued or running; more answer 429 (0: no limit).
+    pub max_builds_per_client: usize,
+    /// Take the client's address from the last `X-Forwarded-For` entry (behind a proxy that
+    /// sets it), not from the connection.
+    pub trust_forwarded_for: bool,
     /// Budget of the in-memory cache of planets and rendered answers, bytes.
     pub cache_bytes: usize,
     /// Largest request body, bytes.
@@ -110,6 +115,8 @@ impl Default for Config {
             store_url: None,
             max_queue: 8,
             workers: 1,
+            max_builds_per_client: 2,
+            trust_forwarded_for: false,
             cache_bytes: 512 << 20,
             body_limit: 64 << 20,
             cors_origin: "*".into(),
@@ -218,6 +225,8 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     let state = Arc::new(AppState {
         adaption,
         pool: jobs::Pool::new(config.workers, config.max_queue),
+        builtin_pool: jobs::Pool::new(1, 0),
+        clients: jobs::PerClient::new(config.max_builds_per_client),
         cache: cache::ByteLru::new(config.cache_bytes),
         metrics: metrics::Metrics::default(),
         ready: AtomicBool::new(!config.default_planet),
@@ -240,7 +249,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     let (tx, rx) = tokio::sync::oneshot::channel::<()>();
     let task = tokio::spawn(async move {
-        axum::serve(listener, app)
+        axum::serve(listener, app.into_make_service_with_connect_info::<SocketAddr>())
             .with_graceful_shutdown(async move {
                 let _ = rx.await;
             })

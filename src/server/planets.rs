@@ -2,12 +2,13 @@
 
 use super::error::ApiError;
 use super::input::{self, planet_id};
-use super::state::{queue_full, AppState, Entry, EARTH_ID};
+use super::state::{client_queue_full, queue_full, AppState, Entry, EARTH_ID};
 use crate::maps::MapLimits;
 use axum::body::Body;
-use axum::extract::{Path, RawQuery, State};
+use axum::extract::{ConnectInfo, Path, RawQuery, State};
 use axum::http::{header, HeaderValue, Request, StatusCode};
 use axum::response::{IntoResponse, Response};
+use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 
 /// A JSON answer that clients must not cache (records change while a planet builds).
@@ -29,12 +30,14 @@ fn with_location(mut res: Response, id: &str) -> Response {
 /// `POST /v1/planets`: 202 with the new record, or 200/202 with the existing one.
 pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> Result<Response, ApiError> {
     let limits = MapLimits { max_bytes: state.config.body_limit, max_pixels: state.config.max_map_pixels };
+    let client = client_address(&req, state.config.trust_forwarded_for);
     let new = input::read(req, limits).await?;
     let id = planet_id(&new.input, new.map.as_deref());
     if let Some(entry) = state.lookup(&id).await? {
         return Ok(existing(&state, &entry));
     }
     admit_size(&new, state.config.max_planet_faces.min(state.config.max_faces_cap))?;
+    let ticket = state.clients.take(client).ok_or_else(|| client_queue_full(state.clients.held(client)))?;
     let slot = state.pool.reserve().ok_or_else(queue_full)?;
     state.store.put(&id, &new.input, new.map).await.map_err(|e| {
         tracing::error!(%id, error = %e, "cannot store planet inputs");
@@ -51,8 +54,19 @@ pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> R
         entry
     };
     tracing::info!(%id, "planet accepted");
-    state.start_build(&entry, slot);
+    state.start_build(&entry, slot, ticket);
     Ok(with_location(json(StatusCode::ACCEPTED, &state.record(&entry)), &id))
+}
+
+/// The client's address: the connection's peer, or with `trust_forwarded_for` the last
+/// `X-Forwarded-For` entry (the one the proxy in front added) where it parses.
+fn client_address(req: &Request<Body>, trust_forwarded_for: bool) -> IpAddr {
+    let forwarded = || {
+        let last = req.headers().get_all("x-forwarded-for").iter().next_back()?.to_str().ok()?;
+        last.rsplit(',').next()?.trim().parse::<IpAddr>().ok()
+    };
+    let peer = || req.extensions().get::<ConnectInfo<SocketAddr>>().map(|c| c.0.ip());
+    trust_forwarded_for.then(forwarded).flatten().or_else(peer).unwrap_or(IpAddr::V6(std::net::Ipv6Addr::UNSPECIFIED))
 }
 
 /// 422 `too_large` for a planet whose base mesh would have more faces than `limit` (the

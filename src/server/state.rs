@@ -3,7 +3,7 @@
 
 use super::cache::ByteLru;
 use super::error::ApiError;
-use super::jobs::Pool;
+use super::jobs::{ClientTicket, Pool};
 use super::metrics::Metrics;
 use super::store::{Store, StoredInput};
 use super::Config;
@@ -86,6 +86,10 @@ pub struct AppState {
     pub store: Store,
     pub planets: RwLock<BTreeMap<String, Arc<Entry>>>,
     pub pool: Arc<Pool>,
+    /// The built-in planet's own worker: its build never waits behind uploads.
+    pub builtin_pool: Arc<Pool>,
+    /// Each client's share of the build queue.
+    pub clients: Arc<super::jobs::PerClient>,
     pub cache: ByteLru<Cached>,
     pub metrics: Metrics,
     /// Whether the built-in planet is built (or there is none).
@@ -236,7 +240,8 @@ impl AppState {
         if st.job != Job::Idle || st.error.is_some() || self.cache.contains(&planet_key(&entry.id)) {
             return Ok(());
         }
-        let slot = self.pool.reserve().ok_or_else(queue_full)?;
+        let pool = if entry.embedded.is_some() { &self.builtin_pool } else { &self.pool };
+        let slot = pool.reserve().ok_or_else(queue_full)?;
         self.metrics.cache_miss("planet");
         st.job = Job::Queued;
         st.progress = 0.0;
@@ -246,18 +251,22 @@ impl AppState {
         Ok(())
     }
 
-    /// Queues the build of a new planet into a reserved slot.
-    pub fn start_build(self: &Arc<Self>, entry: &Arc<Entry>, slot: super::jobs::Slot) {
+    /// Queues the build of a new planet into a reserved slot; the client's ticket is given
+    /// back when the build has run.
+    pub fn start_build(self: &Arc<Self>, entry: &Arc<Entry>, slot: super::jobs::Slot, ticket: ClientTicket) {
         entry.state.lock().expect("entry lock").job = Job::Queued;
         let (state, entry) = (Arc::clone(self), Arc::clone(entry));
-        slot.submit(move || run_build(&state, &entry));
+        slot.submit(move || {
+            run_build(&state, &entry);
+            drop(ticket);
+        });
     }
 
     /// Queues the build of the built-in planet whatever the queue holds.
     pub fn start_default_build(self: &Arc<Self>, entry: &Arc<Entry>) {
         entry.state.lock().expect("entry lock").job = Job::Queued;
         let (state, entry) = (Arc::clone(self), Arc::clone(entry));
-        self.pool.submit_unbounded(move || {
+        self.builtin_pool.submit_unbounded(move || {
             run_build(&state, &entry);
             if state.cache.contains(&planet_key(EARTH_ID)) {
                 state.ready.store(true, Ordering::SeqCst);
@@ -275,6 +284,18 @@ pub fn storage_error(e: String) -> ApiError {
 /// 429 with `Retry-After`.
 pub fn queue_full() -> ApiError {
     ApiError::new(StatusCode::TOO_MANY_REQUESTS, "queue_full", "the build queue is full; retry later").retry_after(5)
+}
+
+/// 429 `client_queue_full`: this client has its share of the build queue.
+pub fn client_queue_full(held: usize) -> ApiError {
+    ApiError::new(
+        StatusCode::TOO_MANY_REQUESTS,
+        "client_queue_full",
+        format!(
+            "{held} planets of yours are queued or building, as many as one client may have; retry when they are built"
+        ),
+    )
+    .retry_after(5)
 }
 
 /// Runs on a build worker: loads the inputs, builds, caches the planet or records the failure.

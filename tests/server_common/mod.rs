@@ -31,7 +31,8 @@ pub fn scratch(name: &str) -> PathBuf {
 
 /// The test configuration: no built-in planet, inputs under `dir`.
 pub fn config(dir: &Path) -> Config {
-    Config { data_dir: dir.to_path_buf(), default_planet: false, ..Config::default() }
+    // Tests are one client that posts many planets: no per-client share unless a test sets one.
+    Config { data_dir: dir.to_path_buf(), default_planet: false, max_builds_per_client: 0, ..Config::default() }
 }
 
 pub async fn start(config: Config) -> TestServer {
