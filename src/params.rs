@@ -269,6 +269,9 @@ impl PlanetRequest {
         if !value.is_object() {
             return Err(body("expected a JSON object {\"seed\": N, \"params\": {...}}".into()));
         }
+        if let Some(field) = duplicate_key(text) {
+            return Err(ParamError { field, message: "the key is given twice; give it once".into() });
+        }
         let value = with_preset_defaults(value);
         let req: PlanetRequest = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
@@ -279,6 +282,67 @@ impl PlanetRequest {
         req.params.validate()?;
         Ok(req)
     }
+}
+
+/// The dotted path of the first key that one JSON object of `text` (valid JSON) gives twice,
+/// which a parse into a map would settle silently by keeping the last.
+fn duplicate_key(text: &str) -> Option<String> {
+    use serde::de::{DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
+    struct Walk<'a>(&'a mut Option<String>, String);
+    impl<'de> DeserializeSeed<'de> for Walk<'_> {
+        type Value = ();
+        fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+            d.deserialize_any(self)
+        }
+    }
+    impl<'de> Visitor<'de> for Walk<'_> {
+        type Value = ();
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("JSON")
+        }
+        fn visit_bool<E>(self, _: bool) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_i64<E>(self, _: i64) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_u64<E>(self, _: u64) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_f64<E>(self, _: f64) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_str<E>(self, _: &str) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_unit<E>(self) -> Result<(), E> {
+            Ok(())
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+            let Walk(found, path) = self;
+            let mut i = 0;
+            while seq.next_element_seed(Walk(&mut *found, format!("{path}[{i}]")))?.is_some() {
+                i += 1;
+            }
+            Ok(())
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+            let Walk(found, path) = self;
+            let mut seen = std::collections::HashSet::new();
+            while let Some(key) = map.next_key::<String>()? {
+                let at = if path.is_empty() { key.clone() } else { format!("{path}.{key}") };
+                if !seen.insert(key) && found.is_none() {
+                    *found = Some(at.clone());
+                }
+                map.next_value_seed(Walk(&mut *found, at))?;
+            }
+            Ok(())
+        }
+    }
+    let mut found = None;
+    let mut de = serde_json::Deserializer::from_str(text);
+    Walk(&mut found, String::new()).deserialize(&mut de).ok()?;
+    found
 }
 
 /// Fills the fields a request's `params` leaves out from its `preset` (default `earth`). A
@@ -373,6 +437,11 @@ mod tests {
             (r#"{"params": {"land_percent": 100}}"#, "params.land_percent"),
             (r#"{"params": {"radius_m": -1}}"#, "params.radius_m"),
             (r#"{"params": {"base_faces": 4}}"#, "params.base_faces"),
+            (r#"{"seed": 1, "seed": 2}"#, "seed"),
+            (
+                r#"{"seed": 1, "params": {"land_percent": 20, "sea_level_m": 0, "land_percent": 30}}"#,
+                "params.land_percent",
+            ),
             (r#"{"params": {"max_river_depth_m": 5000}}"#, "params.max_river_depth_m"),
             (r#"{"params": {"max_mountain_altitude_m": 100}}"#, "params.max_mountain_altitude_m"),
             (r#"{"params": {"continents": 0}}"#, "params.continents"),

@@ -58,6 +58,17 @@ async fn bad_requests_name_their_problem() {
     assert_eq!(err["field"], "map_range");
     let err = expect_error(s.post_map(small_map(), &[("colour", "red")]).await, 422, "unknown_field").await;
     assert_eq!(err["field"], "colour");
+    // A part or a JSON key given twice is refused by name, not settled by the last one.
+    let twice = [("seed", "1"), ("seed", "2")];
+    let err = expect_error(s.post_map(small_map(), &twice).await, 422, "duplicate_field").await;
+    assert_eq!(err["field"], "seed");
+    let err = expect_error(s.post_map(small_map(), &[("map", "x")]).await, 422, "duplicate_field").await;
+    assert_eq!(err["field"], "map");
+    let err = expect_error(s.post_json(r#"{"seed": 1, "seed": 2}"#).await, 422, "invalid_params").await;
+    assert_eq!(
+        (err["field"].as_str(), err["message"].as_str()),
+        (Some("seed"), Some("the key is given twice; give it once"))
+    );
     let mut cut = small_map();
     cut.truncate(cut.len() / 2);
     let err = expect_error(s.post_map(cut, &[]).await, 422, "corrupt_image").await;

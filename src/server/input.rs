@@ -93,8 +93,12 @@ fn text_part(name: &str, bytes: &[u8]) -> Result<String, ApiError> {
         .map_err(|_| ApiError::unprocessable("invalid_field", name, format!("{name} is not UTF-8 text")))
 }
 
+/// The parts a multipart POST may have, each at most once.
+const PARTS: [&str; 6] = ["map", "map_kind", "map_range", "map_bounds", "seed", "params"];
+
 async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlanet, ApiError> {
     let (mut map, mut kind, mut range, mut bounds, mut seed, mut params) = (None, None, None, None, None, None);
+    let mut seen = std::collections::HashSet::new();
     loop {
         let field = match mp.next_field().await {
             Ok(Some(f)) => f,
@@ -102,6 +106,13 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlane
             Err(e) => return Err(body_error(e.status(), e.body_text())),
         };
         let name = field.name().unwrap_or("").to_string();
+        if PARTS.contains(&name.as_str()) && !seen.insert(name.clone()) {
+            return Err(ApiError::unprocessable(
+                "duplicate_field",
+                name.clone(),
+                format!("the part {name:?} is given twice; give it once"),
+            ));
+        }
         let bytes = field.bytes().await.map_err(|e| body_error(e.status(), e.body_text()))?;
         match name.as_str() {
             "map" => map = Some(bytes),
