@@ -22,11 +22,17 @@
 //! cargo bench --bench http_load -- --connections 16 --phase 5 --duration 10
 //! cargo bench --bench http_load -- --tiles-only                 # only the 3D Tiles phases
 //! cargo bench --bench http_load -- --replicas --duration 30      # three replicas behind HAProxy
+//! cargo bench --bench http_load -- --adversarial --connections 12 --max-rss-mib 2458
 //! ```
+//!
+//! `--adversarial` runs only the phase of `http_load/adversarial.rs`: one hostile client's
+//! worst requests at once; pass `--max-rss-mib` the bound SECURITY.md states (2458).
 //!
 //! `--replicas` runs only the phases of `http_load/replicas.rs`: three replicas on one store
 //! behind HAProxy (installed: `apt-get install haproxy`), one killed and restarted mid-run.
 
+#[path = "http_load/adversarial.rs"]
+mod adversarial;
 #[path = "http_load/replicas.rs"]
 mod replicas;
 #[path = "http_load/tiles.rs"]
@@ -46,14 +52,29 @@ struct Args {
     duration: f64,
     tiles_only: bool,
     replicas: bool,
+    adversarial: bool,
     max_rss_mib: f64,
+    /// More options for the server, e.g. to compare its limits.
+    serve_args: Vec<String>,
 }
 
 fn args() -> Args {
-    let mut a =
-        Args { connections: 64, phase: 20.0, duration: 60.0, tiles_only: false, replicas: false, max_rss_mib: 1024.0 };
+    let mut a = Args {
+        connections: 64,
+        phase: 20.0,
+        duration: 60.0,
+        tiles_only: false,
+        replicas: false,
+        adversarial: false,
+        max_rss_mib: 1024.0,
+        serve_args: Vec::new(),
+    };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
+        if arg == "--serve-arg" {
+            a.serve_args.push(it.next().unwrap_or_else(|| usage(&arg)));
+            continue;
+        }
         let mut value = || it.next().and_then(|v| v.parse::<f64>().ok()).unwrap_or_else(|| usage(&arg));
         match arg.as_str() {
             "--connections" => a.connections = value() as usize,
@@ -61,6 +82,7 @@ fn args() -> Args {
             "--duration" => a.duration = value(),
             "--tiles-only" => a.tiles_only = true,
             "--replicas" => a.replicas = true,
+            "--adversarial" => a.adversarial = true,
             "--max-rss-mib" => a.max_rss_mib = value(),
             "--bench" => {}
             _ => usage(&arg),
@@ -70,7 +92,7 @@ fn args() -> Args {
 }
 
 fn usage(arg: &str) -> ! {
-    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only --replicas --max-rss-mib MIB");
+    eprintln!("http_load: bad argument {arg:?}; options: --connections N --phase SECS --duration SECS --tiles-only --replicas --adversarial --max-rss-mib MIB --serve-arg ARG");
     std::process::exit(2)
 }
 
@@ -97,10 +119,11 @@ impl Drop for Server {
 }
 
 impl Server {
-    fn start() -> Server {
+    fn start(extra: &[String]) -> Server {
         let data = TempDir(std::env::temp_dir().join(format!("riverworld-http-load-{}", std::process::id())));
         let _ = std::fs::remove_dir_all(&data.0);
-        let mut child = serve("127.0.0.1:0", &data.0).stderr(Stdio::piped()).spawn().expect("start riverworld serve");
+        let mut child =
+            serve("127.0.0.1:0", &data.0).args(extra).stderr(Stdio::piped()).spawn().expect("start riverworld serve");
         let stderr = child.stderr.take().expect("stderr");
         let (tx, rx) = std::sync::mpsc::channel();
         std::thread::spawn(move || {
@@ -144,15 +167,18 @@ fn peak_rss_mib(pid: u32) -> f64 {
 }
 
 /// One request of a load: method, path and body (POST bodies are JSON). A `{n}` in the path is
-/// replaced by a number that differs between requests (a new camera each time).
+/// replaced by a number that differs between requests (a new camera each time), `{m}` by its
+/// last two digits.
 #[derive(Clone)]
 struct Req {
     post: Option<&'static str>,
     path: String,
+    /// A map to POST as multipart with a `{n}` seed.
+    map: Option<Arc<Vec<u8>>>,
 }
 
 fn get(path: impl Into<String>) -> Req {
-    Req { post: None, path: path.into() }
+    Req { post: None, path: path.into(), map: None }
 }
 
 /// Requests sent so far, for `{n}` in paths.
@@ -160,10 +186,16 @@ static SENT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0)
 
 async fn send(client: &reqwest::Client, base: &str, req: &Req) -> (u16, usize) {
     let n = SENT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let url = format!("{base}{}", req.path.replace("{n}", &n.to_string()));
-    let builder = match req.post {
-        Some(body) => client.post(url).header("content-type", "application/json").body(body),
-        None => client.get(url),
+    let url = format!("{base}{}", req.path.replace("{n}", &n.to_string()).replace("{m}", &format!("{:02}", n % 100)));
+    let builder = match (req.post, &req.map) {
+        (_, Some(map)) => {
+            let part = reqwest::multipart::Part::bytes(map.to_vec()).file_name("map.png");
+            client.post(url).multipart(reqwest::multipart::Form::new().part("map", part).text("seed", n.to_string()))
+        }
+        (Some(body), None) => {
+            client.post(url).header("content-type", "application/json").body(body.replace("{n}", &n.to_string()))
+        }
+        (None, None) => client.get(url),
     };
     match builder.send().await {
         Ok(res) => {
@@ -187,6 +219,8 @@ struct Outcome {
     refused: usize,
     bytes: usize,
     elapsed: f64,
+    /// Answers by status code.
+    statuses: std::collections::HashMap<u16, usize>,
 }
 
 /// `connections` clients, each with one keep-alive connection, send the requests of `mix` in
@@ -218,6 +252,7 @@ fn spawn_load(base: &str, connections: usize, secs: f64, mix: &[Req]) -> Vec<tok
                     let (status, len) = send(&client, &base, req).await;
                     out.latencies_us.push(t.elapsed().as_micros() as u64);
                     out.bytes += len;
+                    *out.statuses.entry(status).or_insert(0) += 1;
                     if status >= 500 {
                         out.server_errors += 1;
                     } else if !(200..300).contains(&status) {
@@ -240,6 +275,9 @@ async fn gather(tasks: Vec<tokio::task::JoinHandle<Outcome>>, start: Instant) ->
         SERVER_ERRORS.fetch_add(o.server_errors, std::sync::atomic::Ordering::Relaxed);
         all.refused += o.refused;
         all.bytes += o.bytes;
+        for (status, n) in o.statuses {
+            *all.statuses.entry(status).or_insert(0) += n;
+        }
     }
     all.elapsed = start.elapsed().as_secs_f64();
     all.latencies_us.sort_unstable();
@@ -293,7 +331,7 @@ fn main() {
         }
         return;
     }
-    let server = Server::start();
+    let server = Server::start(&args.serve_args);
     let base = server.base.clone();
     runtime.block_on(async {
         let client = reqwest::Client::new();
@@ -302,6 +340,10 @@ fn main() {
         println!("server ready (built-in planet earth built) after {:.1} s", t.elapsed().as_secs_f64());
         if args.tiles_only {
             tiles::run(&server, args.connections, args.phase).await;
+            return;
+        }
+        if args.adversarial {
+            adversarial::run(&server, args.connections, args.duration).await;
             return;
         }
 
@@ -400,7 +442,7 @@ fn mixed() -> Vec<Req> {
         r#"{"seed": 3, "params": {"base_faces": 2000, "continents": 3}}"#,
     ];
     for (i, body) in posts.into_iter().enumerate() {
-        mix.insert(1 + 8 * i, Req { post: Some(body), path: "/v1/planets".into() });
+        mix.insert(1 + 8 * i, Req { post: Some(body), path: "/v1/planets".into(), map: None });
     }
     mix
 }

@@ -238,6 +238,11 @@ struct ServeArgs {
     /// at least 2].
     #[arg(long, default_value_t = 0, hide_default_value = true)]
     render_permits: usize,
+    /// Working memory, MiB, that the renders running at once may take together; each draws what
+    /// its faces and pixels need before it starts (work above the whole budget runs alone).
+    #[arg(long, default_value_t = riverworld::server::DEFAULT_RENDER_MEMORY_MIB,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    render_memory_mb: u32,
     /// Renders that may wait for a permit; more answer 429 busy.
     #[arg(long, default_value_t = 16)]
     render_queue: usize,
@@ -293,6 +298,7 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
             None => None,
         },
         render_permits: args.render_permits,
+        render_memory_mib: args.render_memory_mb,
         render_queue: args.render_queue,
         max_raster_width: args.max_raster_width,
         max_map_pixels: args.max_map_mpixels << 20,

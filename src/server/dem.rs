@@ -9,7 +9,7 @@
 //! `width` and `height` in 1..=8192 and at most `--max-dem-pixels` cells, or 422 naming the field.
 
 use super::error::ApiError;
-use super::resources::{cached, set_once, unknown_key, whole_number_in, Derived};
+use super::resources::{cached, cost, set_once, unknown_key, whole_number_in, Derived, BYTES_PER_PIXEL};
 use super::state::AppState;
 use super::tiles::{planet_entry, tiling};
 use crate::export::dem::{dem_tiff, DemRequest, MAX_DEM_SIDE};
@@ -52,7 +52,9 @@ pub async fn dem(
 ) -> Result<Response, ApiError> {
     let entry = planet_entry(&state, &id).await?;
     let req = parse_query(query.as_deref().unwrap_or(""), state.config.max_dem_pixels)?;
-    let derived = Derived { route: "dem.tif".into(), norm: req.to_query(), content_type: "image/tiff" };
+    let cells = u64::from(req.width) * u64::from(req.height);
+    let cost = cost(cells * BYTES_PER_PIXEL, None, true);
+    let derived = Derived { route: "dem.tif".into(), norm: req.to_query(), content_type: "image/tiff", cost };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
@@ -103,7 +105,12 @@ pub async fn tilejson(
     let encoding = parse_encoding(query.as_deref().unwrap_or(""))?;
     let base = format!("{}/v1/planets/{id}/dem", origin(&headers));
     let norm = format!("encoding={}&base={base}", encoding.name());
-    let derived = Derived { route: "dem/tilejson.json".into(), norm, content_type: "application/json" };
+    let derived = Derived {
+        route: "dem/tilejson.json".into(),
+        norm,
+        content_type: "application/json",
+        cost: cost(1 << 20, None, false),
+    };
     cached(state, entry, derived, headers, move |_| Ok(terrain_rgb::tilejson(&id, &base, encoding).into_bytes())).await
 }
 
@@ -141,6 +148,7 @@ pub async fn tile(
         route: format!("dem/{z}/{x}/{y}.png"),
         norm: format!("encoding={}", encoding.name()),
         content_type: "image/png",
+        cost: cost(512 * 512 * BYTES_PER_PIXEL, None, true),
     };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {

@@ -50,6 +50,10 @@ pub const OPENAPI: &str = include_str!("../../openapi.yaml");
 /// Default of [`Config::max_render_pixels`]: 4096 x 4096.
 pub const DEFAULT_MAX_RENDER_PIXELS: u64 = 4096 * 4096;
 
+/// Default of [`Config::render_memory_mib`]: a view at the default face cap (about 860 MiB)
+/// runs, two do not run at once.
+pub const DEFAULT_RENDER_MEMORY_MIB: u32 = 1024;
+
 /// Default of [`Config::max_planet_faces`].
 pub const DEFAULT_MAX_PLANET_FACES: usize = 1_000_000;
 
@@ -91,6 +95,9 @@ pub struct Config {
     /// Heavy renders (answers that are not cached) running at once; 0 = one per CPU core, at
     /// least 2.
     pub render_permits: usize,
+    /// Working memory (MiB) that the renders running at once may take together; each draws
+    /// what its faces and pixels need before it starts.
+    pub render_memory_mib: u32,
     /// Heavy renders that may wait for a permit; more answer 429 `busy`.
     pub render_queue: usize,
     /// Widest raster (`width` of landmask.png, preview.png, elevation.tif) a request may ask for.
@@ -127,6 +134,7 @@ impl Default for Config {
             build_delay: Duration::ZERO,
             api_token: None,
             render_permits: 0,
+            render_memory_mib: DEFAULT_RENDER_MEMORY_MIB,
             render_queue: 16,
             max_raster_width: resources::MAX_RASTER_WIDTH,
             max_map_pixels: crate::maps::MapLimits::default().max_pixels,
@@ -232,7 +240,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
         ready: AtomicBool::new(!config.default_planet),
         runtime: tokio::runtime::Handle::current(),
         inflight: Mutex::new(Default::default()),
-        renders: limit::HeavyLimit::new(permits, config.render_queue),
+        renders: limit::HeavyLimit::new(permits, config.render_memory_mib, config.render_queue),
         planets: RwLock::new(planets),
         store,
         config,

@@ -247,8 +247,13 @@ pub async fn get(
     let entry = state.lookup(&id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))?;
     let params = entry.input.params.clone();
     let (job, norm) = prepare(res, query.as_deref().unwrap_or(""), &params, &state.config)?;
-    let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type() };
     let (gpu, cap) = (state.adaption.clone(), state.config.max_faces_cap);
+    let cost = match &job {
+        Job::View { max_faces, .. } => cost(0, Some((*max_faces, cap)), false),
+        Job::Raster { width } => cost(u64::from(*width) * u64::from(*width / 2) * BYTES_PER_PIXEL, None, false),
+        Job::Rivers => cost(16 << 20, None, false),
+    };
+    let derived = Derived { route: res.name().to_string(), norm, content_type: res.content_type(), cost };
     cached(state, entry, derived, headers, move |planet| render(res, &job, &planet, &params, gpu, cap)).await
 }
 
@@ -258,6 +263,32 @@ pub struct Derived {
     pub route: String,
     pub norm: String,
     pub content_type: &'static str,
+    /// Working memory its render may take, bytes, from the built planet: it is admitted
+    /// against the server's memory budget for renders ([`super::limit::HeavyLimit`]).
+    pub cost: Cost,
+}
+
+/// The working memory of a render, from the built planet (see [`cost`]).
+pub type Cost = Box<dyn FnOnce(&Planet) -> u64 + Send>;
+
+/// Bytes of working memory per face of an adapted mesh: the mesh being refined and the last one
+/// that fitted the budget, then the glTF being written (a 1.36-million-face view measured
+/// 594 MiB peak from the command line).
+pub const VIEW_BYTES_PER_FACE: u64 = 450;
+/// Bytes per pixel of a raster or image being drawn and encoded.
+pub const BYTES_PER_PIXEL: u64 = 16;
+/// Bytes per base-mesh face of the planet's tiling (the surface mesh the tiles and DEMs are cut
+/// from), made once per planet and then cached.
+pub const TILING_BYTES_PER_FACE: u64 = 200;
+
+/// The cost of an answer: a fixed part plus the adapted mesh of a view with `view` = the face
+/// budget asked for (`Some(asked)`), the tiling where `tiling` holds.
+pub fn cost(fixed: u64, view: Option<(Option<usize>, usize)>, tiling: bool) -> Cost {
+    Box::new(move |planet: &Planet| {
+        let base = planet.mesh.faces.len() as u64;
+        let faces = view.map_or(0, |(asked, cap)| view_budget(planet, asked, cap).map_or(base, |b| b as u64));
+        fixed + faces * VIEW_BYTES_PER_FACE + if tiling { base * TILING_BYTES_PER_FACE } else { 0 }
+    })
 }
 
 /// Cache key of a derived answer; every key of a planet starts with `{id}/`.
@@ -281,7 +312,7 @@ where
     F: FnOnce(Arc<Planet>) -> Result<Vec<u8>, ApiError> + Send + 'static,
 {
     let id = entry.id.clone();
-    let Derived { route, norm, content_type } = derived;
+    let Derived { route, norm, content_type, cost } = derived;
     let tag = etag(&id, &route, &norm);
     let key = cache_key(&id, &route, &norm);
     // A listed tag is the answer's (the tag is a function of what it is derived from), so it
@@ -320,7 +351,7 @@ where
     let bytes = cell
         .get_or_try_init(|| async {
             state.metrics.cache_miss("response");
-            let _permit = state.renders.admit().await?;
+            let _permit = state.renders.admit(cost(&planet)).await?;
             if !state.config.render_delay.is_zero() {
                 tokio::time::sleep(state.config.render_delay).await;
             }

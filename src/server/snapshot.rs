@@ -8,7 +8,9 @@
 //! heavy-work permits.
 
 use super::error::ApiError;
-use super::resources::{budget_query, cached, unknown_key, view_budget, whole_number_in, Derived};
+use super::resources::{
+    budget_query, cached, cost, unknown_key, view_budget, whole_number_in, Derived, BYTES_PER_PIXEL,
+};
 use super::state::AppState;
 use crate::render::{self, ImageFormat, RenderError, Shot};
 use axum::extract::{Path, RawQuery, State};
@@ -69,7 +71,12 @@ async fn snapshot(
         ImageFormat::Jpeg => "render.jpg",
     };
     let norm = budget_query(shot.to_query(), max_faces, cap);
-    let derived = Derived { route: route.into(), norm, content_type: format.content_type() };
+    let derived = Derived {
+        route: route.into(),
+        norm,
+        content_type: format.content_type(),
+        cost: cost(pixels * BYTES_PER_PIXEL, Some((max_faces, cap)), false),
+    };
     let gpu = state.adaption.clone();
     cached(state, entry, derived, h, move |planet| {
         let budget = view_budget(&planet, max_faces, cap)?;

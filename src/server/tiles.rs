@@ -9,7 +9,7 @@
 //! planet's deepest level, or `.json` for a tile that starts no external tileset, answers 404.
 
 use super::error::ApiError;
-use super::resources::{cache_key, cached, no_query, Derived};
+use super::resources::{cache_key, cached, cost, no_query, Derived};
 use super::state::{AppState, Cached, Entry};
 use crate::build::Planet;
 use crate::export::tiles::{self, is_subtree_root, KeyError, PlanetTiles, TileFile, TileKey};
@@ -34,7 +34,12 @@ pub async fn tileset(
 ) -> Answer {
     let entry = planet_entry(&state, &id).await?;
     no_query(query.as_deref())?;
-    let derived = Derived { route: "tileset.json".into(), norm: String::new(), content_type: "application/json" };
+    let derived = Derived {
+        route: "tileset.json".into(),
+        norm: String::new(),
+        content_type: "application/json",
+        cost: cost(16 << 20, None, true),
+    };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
@@ -70,7 +75,12 @@ pub async fn tile(
             return Err(ApiError::not_found(&format!("tileset {name:?} (only levels 1, 3, 5, ... start one)")))
         }
     };
-    let derived = Derived { route: format!("tiles/{}", file.name()), norm: String::new(), content_type };
+    let derived = Derived {
+        route: format!("tiles/{}", file.name()),
+        norm: String::new(),
+        content_type,
+        cost: cost(16 << 20, None, true),
+    };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
