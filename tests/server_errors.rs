@@ -323,3 +323,25 @@ async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
     assert_eq!(stored, 4, "the JSON planet, the regional island, the GeoTIFF planet and the good upload");
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn oversized_request_heads_answer_in_the_error_shape() {
+    let s = start(config(&scratch("heads"))).await;
+    // A 60 KB camera: refused by length, not echoed back.
+    let long = format!("/v1/planets/earth/view.glb?eye={}&target=0,0,0", "1".repeat(60_000));
+    let err = expect_error(s.get(&long).await, 414, "uri_too_long").await;
+    let message = err["message"].as_str().unwrap();
+    assert!(message.contains("at most 8192") && message.len() < 200, "{err}");
+    let mut many = s.client.get(s.url("/healthz"));
+    for i in 0..70 {
+        many = many.header(format!("x-filler-{i}"), "1");
+    }
+    expect_error(many.send().await.unwrap(), 431, "headers_too_large").await;
+    let big = s.client.get(s.url("/healthz")).header("x-filler", "a".repeat(20_000));
+    let err = expect_error(big.send().await.unwrap(), 431, "headers_too_large").await;
+    assert!(err["message"].as_str().unwrap().contains("16384 bytes"), "{err}");
+    // Within the limits, and after, the server answers as usual.
+    let fine = s.client.get(s.url("/healthz")).header("x-filler", "a".repeat(8_000));
+    assert_eq!(fine.send().await.unwrap().status().as_u16(), 200);
+    s.stop().await;
+}

@@ -93,6 +93,36 @@ impl IntoResponse for ApiError {
     }
 }
 
+/// Longest request target (path and query) the server reads, bytes; hyper itself refuses
+/// targets from 64 KiB with an empty 414.
+pub const MAX_TARGET_BYTES: usize = 8192;
+/// Most header fields, and most bytes of header names and values together, a request may
+/// carry; hyper itself refuses more than 100 fields or about 400 KiB with an empty 431.
+pub const MAX_HEADERS: usize = 64;
+pub const MAX_HEADER_BYTES: usize = 16384;
+
+/// Refuses, in the API's error shape, request heads over the server's own limits, which lie
+/// below the HTTP layer's (whose refusals have no body): 414 `uri_too_long`, 431
+/// `headers_too_large`.
+pub async fn head_limits(req: Request<Body>, next: Next) -> Response {
+    let target = req.uri().path_and_query().map_or(0, |p| p.as_str().len());
+    if target > MAX_TARGET_BYTES {
+        let message = format!("the request target is {target} bytes; this server reads at most {MAX_TARGET_BYTES}");
+        return ApiError::new(StatusCode::URI_TOO_LONG, "uri_too_long", message).into_response();
+    }
+    let fields = req.headers().len();
+    let bytes: usize = req.headers().iter().map(|(k, v)| k.as_str().len() + v.len()).sum();
+    if fields > MAX_HEADERS || bytes > MAX_HEADER_BYTES {
+        let message = format!(
+            "{fields} header fields of {bytes} bytes; this server reads at most {MAX_HEADERS} fields of \
+             {MAX_HEADER_BYTES} bytes"
+        );
+        return ApiError::new(StatusCode::REQUEST_HEADER_FIELDS_TOO_LARGE, "headers_too_large", message)
+            .into_response();
+    }
+    next.run(req).await
+}
+
 /// Code and message for an error status that reached the client without a JSON body.
 fn plain_status(status: StatusCode) -> (&'static str, &'static str) {
     match status {

@@ -289,8 +289,8 @@ fn png_size(png: &[u8]) -> (u32, u32) {
     (be(16), be(20))
 }
 
-/// All routes with their layers (outermost first: trace, CORS, compression, JSON errors,
-/// metrics, timeout, access control, body limit).
+/// All routes with their layers (outermost first: trace, CORS, compression, JSON errors, the
+/// request head's limits, metrics, timeout, access control, body limit).
 fn router(state: Arc<AppState>) -> Result<Router, String> {
     let c = &state.config;
     let origin = if c.cors_origin.trim() == "*" {
@@ -344,6 +344,7 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .layer(middleware::from_fn_with_state(Arc::clone(&state), auth::require_token))
         .layer(TimeoutLayer::with_status_code(StatusCode::SERVICE_UNAVAILABLE, c.request_timeout))
         .layer(middleware::from_fn_with_state(Arc::clone(&state), metrics::track))
+        .layer(middleware::from_fn(error::head_limits))
         .layer(middleware::from_fn(error::json_errors))
         .layer(compression)
         .layer(cors)
