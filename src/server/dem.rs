@@ -131,7 +131,7 @@ pub async fn tile(
     };
     let number = |s: &str| {
         if s.len() <= 10 && !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) {
-            s.parse::<u32>().ok()
+            s.parse::<u64>().ok()
         } else {
             None
         }
@@ -140,6 +140,9 @@ pub async fn tile(
     let (z, x) = (number(&z).ok_or_else(malformed)?, number(&x).ok_or_else(malformed)?);
     let encoding = parse_encoding(query.as_deref().unwrap_or(""))?;
     let zoom = u8::try_from(z).unwrap_or(u8::MAX);
+    // Ten digits may pass 2^32: such a tile lies outside every zoom's grid.
+    let outside = || ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below 2^z)"));
+    let (x, y) = (u32::try_from(x).map_err(|_| outside())?, u32::try_from(y).map_err(|_| outside())?);
     terrain_rgb::tile_bounds(zoom, x, y).map_err(|e| match e {
         TileError::TooDeep => ApiError::not_found(&format!("tile {z}/{x}/{y} (the deepest zoom is {MAX_ZOOM})")),
         TileError::Outside => ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below 2^z)")),
