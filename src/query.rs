@@ -29,7 +29,12 @@ pub fn percent_decode(s: &str) -> String {
 
 /// An input as error messages and logs show it: at most 200 characters, marked where cut.
 pub fn cut(s: &str) -> String {
-    match s.char_indices().nth(200) {
+    cut_to(s, 200)
+}
+
+/// `s` cut to `chars` characters, with an ellipsis where something was cut.
+pub fn cut_to(s: &str, chars: usize) -> String {
+    match s.char_indices().nth(chars) {
         Some((at, _)) => format!("{}…", &s[..at]),
         None => s.to_string(),
     }

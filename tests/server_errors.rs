@@ -346,3 +346,24 @@ async fn oversized_request_heads_answer_in_the_error_shape() {
     assert_eq!(fine.send().await.unwrap().status().as_u16(), 200);
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn errors_never_echo_a_long_input_whole() {
+    let s = start(config(&scratch("echo"))).await;
+    let id =
+        s.post_json(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await.json::<serde_json::Value>().await.unwrap()
+            ["id"]
+            .as_str()
+            .unwrap()
+            .to_string();
+    let width = "9".repeat(7000);
+    let err =
+        expect_error(s.get(&format!("/v1/planets/{id}/landmask.png?width={width}")).await, 422, "invalid_parameter");
+    let err = err.await;
+    assert!(err["message"].as_str().unwrap().chars().count() <= 601, "{err}");
+    let body = format!(r#"{{"seed": "{}"}}"#, "y".repeat(5000));
+    let err = expect_error(s.post_json(&body).await, 422, "invalid_params").await;
+    let message = err["message"].as_str().unwrap();
+    assert!(message.chars().count() <= 601 && message.ends_with('…'), "{err}");
+    s.stop().await;
+}

@@ -67,9 +67,15 @@ impl ApiError {
         ApiError::unprocessable("invalid_params", e.field.clone(), e.message.clone())
     }
 
-    /// The JSON body of this error.
+    /// The JSON body of this error; the message and field are cut to [`MAX_MESSAGE_CHARS`] and
+    /// 200 characters, so that no input comes back whole, whatever its size.
     pub fn body(&self) -> serde_json::Value {
-        serde_json::json!({ "error": self })
+        let cut = ApiError {
+            message: crate::query::cut_to(&self.message, MAX_MESSAGE_CHARS),
+            field: self.field.as_deref().map(crate::query::cut),
+            ..self.clone()
+        };
+        serde_json::json!({ "error": cut })
     }
 }
 
@@ -92,6 +98,9 @@ impl IntoResponse for ApiError {
         res
     }
 }
+
+/// Longest error message sent, in characters (an echoed input is cut to fit).
+pub const MAX_MESSAGE_CHARS: usize = 600;
 
 /// Longest request target (path and query) the server reads, bytes; hyper itself refuses
 /// targets from 64 KiB with an empty 414.
