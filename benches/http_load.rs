@@ -14,8 +14,8 @@
 //!
 //! For each: requests/s, p50/p99/max latency, 5xx and other non-2xx answers, and the server's
 //! peak resident memory (VmHWM from /proc/PID/status) after the phase. The run fails (exit 1)
-//! if any answer was a 5xx or the peak exceeds `--max-rss-mib` (default 1024: the bound that
-//! SECURITY.md documents for the default settings).
+//! if any answer was a 5xx or the peak exceeds `--max-rss-mib` (default 2458: the bound that
+//! SECURITY.md states for the default settings).
 //!
 //! ```sh
 //! cargo bench --bench http_load                                 # 64 connections, 20 s + 20 s + 60 s
@@ -26,7 +26,7 @@
 //! ```
 //!
 //! `--adversarial` runs only the phase of `http_load/adversarial.rs`: one hostile client's
-//! worst requests at once; pass `--max-rss-mib` the bound SECURITY.md states (2458).
+//! worst requests at once, against the same bound.
 //!
 //! `--replicas` runs only the phases of `http_load/replicas.rs`: three replicas on one store
 //! behind HAProxy (installed: `apt-get install haproxy`), one killed and restarted mid-run.
@@ -66,7 +66,7 @@ fn args() -> Args {
         tiles_only: false,
         replicas: false,
         adversarial: false,
-        max_rss_mib: 1024.0,
+        max_rss_mib: 2458.0,
         serve_args: Vec::new(),
     };
     let mut it = std::env::args().skip(1);

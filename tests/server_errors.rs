@@ -367,3 +367,46 @@ async fn errors_never_echo_a_long_input_whole() {
     assert!(message.chars().count() <= 601 && message.ends_with('…'), "{err}");
     s.stop().await;
 }
+
+/// Sends raw bytes on a new connection and reads the answer until the server closes it.
+fn raw_exchange(addr: &str, request: &[u8]) -> String {
+    use std::io::{Read, Write};
+    let mut stream = std::net::TcpStream::connect(addr).unwrap();
+    stream.set_read_timeout(Some(std::time::Duration::from_secs(10))).unwrap();
+    stream.write_all(request).unwrap();
+    let mut out = Vec::new();
+    let _ = stream.read_to_end(&mut out);
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn requests_the_http_layer_cannot_read_answer_in_the_error_shape() {
+    let s = start(config(&scratch("unreadable"))).await;
+    let addr = s.url("").trim_start_matches("http://").trim_end_matches('/').to_string();
+    let long_target = [b"GET /".as_slice(), &vec![b'a'; 70_000], b" HTTP/1.1\r\nHost: x\r\n\r\n"].concat();
+    let mut many_headers = b"GET /healthz HTTP/1.1\r\nHost: x\r\n".to_vec();
+    for i in 0..150 {
+        many_headers.extend_from_slice(format!("x-h{i}: 1\r\n").as_bytes());
+    }
+    many_headers.extend_from_slice(b"\r\n");
+    let cases: [(&[u8], u16, &str); 4] = [
+        (b"GARBAGE\r\n\r\n", 400, "bad_request"),
+        (b"GET /healthz HTTP/1.1\r\nHost: x\r\nno colon here\r\n\r\n", 400, "bad_request"),
+        (&long_target, 414, "uri_too_long"),
+        (&many_headers, 431, "headers_too_large"),
+    ];
+    for (request, status, code) in cases {
+        let addr = addr.clone();
+        let request = request.to_vec();
+        let answer = tokio::task::spawn_blocking(move || raw_exchange(&addr, &request)).await.unwrap();
+        let (head, body) = answer.split_once("\r\n\r\n").unwrap_or_else(|| panic!("{answer:?}"));
+        assert!(head.starts_with(&format!("HTTP/1.1 {status} ")), "{answer:?}");
+        assert!(head.contains("content-type: application/json"), "{answer:?}");
+        let json: serde_json::Value = serde_json::from_str(body).unwrap_or_else(|_| panic!("{answer:?}"));
+        assert_eq!(json["error"]["code"], code, "{answer:?}");
+    }
+    // The server keeps serving, answers of its own untouched.
+    assert_eq!(s.get("/healthz").await.status().as_u16(), 200);
+    expect_error(s.get("/v1/planets/nope").await, 404, "not_found").await;
+    s.stop().await;
+}

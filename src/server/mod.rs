@@ -22,6 +22,7 @@ pub mod snapshot;
 pub mod state;
 pub mod store;
 pub mod tiles;
+pub mod transport;
 pub mod viewer;
 
 use axum::extract::{DefaultBodyLimit, State};
@@ -257,7 +258,8 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     let (tx, rx) = tokio::sync::oneshot::channel::<()>();
     let task = tokio::spawn(async move {
-        axum::serve(listener, app.into_make_service_with_connect_info::<SocketAddr>())
+        let listener = transport::JsonErrorListener(listener);
+        axum::serve(listener, app.into_make_service_with_connect_info::<transport::ClientAddr>())
             .with_graceful_shutdown(async move {
                 let _ = rx.await;
             })

@@ -3,12 +3,13 @@
 use super::error::ApiError;
 use super::input::{self, planet_id};
 use super::state::{client_queue_full, queue_full, AppState, Entry, EARTH_ID};
+use super::transport::ClientAddr;
 use crate::maps::MapLimits;
 use axum::body::Body;
 use axum::extract::{ConnectInfo, Path, RawQuery, State};
 use axum::http::{header, HeaderValue, Request, StatusCode};
 use axum::response::{IntoResponse, Response};
-use std::net::{IpAddr, SocketAddr};
+use std::net::IpAddr;
 use std::sync::Arc;
 
 /// A JSON answer that clients must not cache (records change while a planet builds).
@@ -65,7 +66,7 @@ fn client_address(req: &Request<Body>, trust_forwarded_for: bool) -> IpAddr {
         let last = req.headers().get_all("x-forwarded-for").iter().next_back()?.to_str().ok()?;
         last.rsplit(',').next()?.trim().parse::<IpAddr>().ok()
     };
-    let peer = || req.extensions().get::<ConnectInfo<SocketAddr>>().map(|c| c.0.ip());
+    let peer = || req.extensions().get::<ConnectInfo<ClientAddr>>().map(|c| c.0 .0.ip());
     trust_forwarded_for.then(forwarded).flatten().or_else(peer).unwrap_or(IpAddr::V6(std::net::Ipv6Addr::UNSPECIFIED))
 }
 
