@@ -269,7 +269,9 @@ impl PlanetRequest {
         if !value.is_object() {
             return Err(body("expected a JSON object {\"seed\": N, \"params\": {...}}".into()));
         }
-        if let Some(field) = duplicate_key(text) {
+        if let Some(path) = duplicate_key(text) {
+            // An empty key at the top has no path: the body names it.
+            let field = if path.is_empty() { "body".to_string() } else { path };
             return Err(ParamError { field, message: "the key is given twice; give it once".into() });
         }
         let value = with_preset_defaults(value);
@@ -438,6 +440,7 @@ mod tests {
             (r#"{"params": {"radius_m": -1}}"#, "params.radius_m"),
             (r#"{"params": {"base_faces": 4}}"#, "params.base_faces"),
             (r#"{"seed": 1, "seed": 2}"#, "seed"),
+            (r#"{"see": 3, "": 3, "": 3, "ams": {"radius_m": ""}}"#, "body"),
             (
                 r#"{"seed": 1, "params": {"land_percent": 20, "sea_level_m": 0, "land_percent": 30}}"#,
                 "params.land_percent",

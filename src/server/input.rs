@@ -3,6 +3,7 @@
 //! names the inputs.
 
 use super::error::ApiError;
+use super::limit::HeavyLimit;
 use super::store::{MapMeta, StoredInput};
 use crate::maps::{GeoBounds, Map, MapError, MapKind, MapLimits};
 use crate::params::PlanetRequest;
@@ -49,7 +50,9 @@ pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
 }
 
 /// Reads and validates a POST body of either content type.
-pub async fn read(req: Request<Body>, limits: MapLimits) -> Result<NewPlanet, ApiError> {
+/// Reads and validates a POST body of either content type; a map is decoded under `heavy`,
+/// drawing its decoding memory ([`decode_cost`]) from the render memory budget.
+pub async fn read(req: Request<Body>, limits: MapLimits, heavy: &HeavyLimit) -> Result<NewPlanet, ApiError> {
     let ctype = req.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_string();
     let mime = ctype.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
     match mime.as_str() {
@@ -64,7 +67,7 @@ pub async fn read(req: Request<Body>, limits: MapLimits) -> Result<NewPlanet, Ap
         }
         "multipart/form-data" => {
             let mp = Multipart::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
-            read_multipart(mp, limits).await
+            read_multipart(mp, limits, heavy).await
         }
         "" => Err(unsupported("no Content-Type")),
         other => Err(unsupported(other)),
@@ -96,7 +99,7 @@ fn text_part(name: &str, bytes: &[u8]) -> Result<String, ApiError> {
 /// The parts a multipart POST may have, each at most once.
 const PARTS: [&str; 6] = ["map", "map_kind", "map_range", "map_bounds", "seed", "params"];
 
-async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlanet, ApiError> {
+async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit) -> Result<NewPlanet, ApiError> {
     let (mut map, mut kind, mut range, mut bounds, mut seed, mut params) = (None, None, None, None, None, None);
     let mut seen = std::collections::HashSet::new();
     loop {
@@ -154,7 +157,9 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits) -> Result<NewPlane
     let request = PlanetRequest::from_json(&body.to_string()).map_err(|e| ApiError::from_params(&e))?;
     let is_tiff = map.starts_with(b"II*\0") || map.starts_with(b"MM\0*");
     let kind = kind.unwrap_or(if is_tiff || range.is_some() { MapKind::Elevation } else { MapKind::Continents });
+    let admitted = heavy.admit(decode_cost(&map, limits.max_pixels)).await?;
     let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
+    drop(admitted);
     check_land_and_sea(&decoded)?;
     let estimated_faces = crate::build::estimated_faces(&request.params, Some(&decoded));
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
@@ -180,6 +185,16 @@ fn check_land_and_sea(map: &crate::maps::Map) -> Result<(), ApiError> {
     Ok(())
 }
 
+/// Bytes a map's decoding may take: 12 per pixel (the decoded samples, the map's f32 values and
+/// the land test's scratch), the pixels a PNG declares in its header, else the most a map may
+/// have.
+pub fn decode_cost(bytes: &[u8], max_pixels: u64) -> u64 {
+    let png = bytes.starts_with(b"\x89PNG\r\n\x1a\n") && bytes.len() >= 24;
+    let be = |i: usize| u64::from(u32::from_be_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]));
+    let pixels = if png { (be(16) * be(20)).min(max_pixels) } else { max_pixels };
+    12 * pixels
+}
+
 /// Decodes a map off the async runtime.
 pub async fn decode_map(
     bytes: Bytes,
@@ -191,4 +206,20 @@ pub async fn decode_map(
     tokio::task::spawn_blocking(move || Map::decode(&bytes, kind, range, bounds, &limits))
         .await
         .unwrap_or_else(|_| Err(MapError::Corrupt { format: "image", detail: "the decoder failed".into() }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::decode_cost;
+
+    #[test]
+    fn a_png_costs_the_pixels_its_header_declares() {
+        let mut png = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR".to_vec();
+        png.extend_from_slice(&8192u32.to_be_bytes());
+        png.extend_from_slice(&4096u32.to_be_bytes());
+        assert_eq!(decode_cost(&png, 64 << 20), 12 * 8192 * 4096);
+        // Never more than the most pixels a map may have; other formats cost that.
+        assert_eq!(decode_cost(&png, 1 << 20), 12 << 20);
+        assert_eq!(decode_cost(b"II*\0", 1 << 20), 12 << 20);
+    }
 }

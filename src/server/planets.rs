@@ -32,7 +32,7 @@ fn with_location(mut res: Response, id: &str) -> Response {
 pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> Result<Response, ApiError> {
     let limits = MapLimits { max_bytes: state.config.body_limit, max_pixels: state.config.max_map_pixels };
     let client = client_address(&req, state.config.trust_forwarded_for);
-    let new = input::read(req, limits).await?;
+    let new = input::read(req, limits, &state.renders).await?;
     let id = planet_id(&new.input, new.map.as_deref());
     if let Some(entry) = state.lookup(&id).await? {
         return Ok(existing(&state, &entry));
