@@ -6,7 +6,7 @@ is refused as it is by AWS (moto accepts any key unless its IAM emulation is on,
 refuses object_store's signatures too), and it needs no container. Its objects are plain files
 under its root directory, so what a killed replica left behind is read straight from the disk.
 
-    cargo install s3s-fs@0.14.1 --features binary --locked --root target/s3s
+    cargo install s3s-fs@0.14.1 --features binary --locked --debug --root target/s3s
     python3 .ci/s3_check.py target/release/riverworld target/s3s/bin/s3s-fs   # binary with --features s3
 
 Checks: two replicas on one bucket prefix; a planet (with an uploaded map) created through one is
