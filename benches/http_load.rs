@@ -14,7 +14,7 @@
 //!
 //! For each: requests/s, p50/p99/max latency, 5xx and other non-2xx answers, and the server's
 //! peak resident memory (VmHWM from /proc/PID/status) after the phase. The run fails (exit 1)
-//! if any answer was a 5xx or the peak exceeds `--max-rss-mib` (default 2458: the bound that
+//! if any answer was a 5xx or the peak exceeds `--max-rss-mib` (default 2816: the bound that
 //! SECURITY.md states for the default settings).
 //!
 //! ```sh
@@ -22,7 +22,7 @@
 //! cargo bench --bench http_load -- --connections 16 --phase 5 --duration 10
 //! cargo bench --bench http_load -- --tiles-only                 # only the 3D Tiles phases
 //! cargo bench --bench http_load -- --replicas --duration 30      # three replicas behind HAProxy
-//! cargo bench --bench http_load -- --adversarial --connections 12 --max-rss-mib 2458
+//! cargo bench --bench http_load -- --adversarial --connections 12
 //! ```
 //!
 //! `--adversarial` runs only the phase of `http_load/adversarial.rs`: one hostile client's
@@ -66,7 +66,7 @@ fn args() -> Args {
         tiles_only: false,
         replicas: false,
         adversarial: false,
-        max_rss_mib: 2458.0,
+        max_rss_mib: 2816.0,
         serve_args: Vec::new(),
     };
     let mut it = std::env::args().skip(1);

@@ -85,6 +85,15 @@ impl HeavyLimit {
         Ok(Admitted { _permit: permit, _memory: memory })
     }
 
+    /// A permit and `bytes` of the memory budget, waiting as long as it takes, outside the
+    /// bounded queue: for work bounded by a queue of its own (planet builds).
+    pub async fn admit_unqueued(&self, bytes: u64) -> Result<Admitted<'_>, ApiError> {
+        let closed = |_| ApiError::internal("shutting down");
+        let permit = self.permits.acquire().await.map_err(closed)?;
+        let memory = self.memory.acquire_many(self.share(bytes)).await.map_err(closed)?;
+        Ok(Admitted { _permit: permit, _memory: memory })
+    }
+
     /// MiB of the memory budget held now.
     pub fn memory_held_mib(&self) -> usize {
         self.memory_mib as usize - self.memory.available_permits()
