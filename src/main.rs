@@ -238,8 +238,9 @@ struct ServeArgs {
     /// at least 2].
     #[arg(long, default_value_t = 0, hide_default_value = true)]
     render_permits: usize,
-    /// Working memory, MiB, that the renders running at once may take together; each draws what
-    /// its faces and pixels need before it starts (work above the whole budget runs alone).
+    /// Working memory, MiB, that the heavy work running at once (renders, map decodes, planet
+    /// builds) may take together; each draws what its faces and pixels need before it starts
+    /// (work above the whole budget runs alone).
     #[arg(long, default_value_t = riverworld::server::DEFAULT_RENDER_MEMORY_MIB,
           value_parser = clap::value_parser!(u32).range(1..))]
     render_memory_mb: u32,

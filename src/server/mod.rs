@@ -96,8 +96,8 @@ pub struct Config {
     /// Heavy renders (answers that are not cached) running at once; 0 = one per CPU core, at
     /// least 2.
     pub render_permits: usize,
-    /// Working memory (MiB) that the renders running at once may take together; each draws
-    /// what its faces and pixels need before it starts.
+    /// Working memory (MiB) that the heavy work running at once (renders, map decodes, planet
+    /// builds) may take together; each draws what its faces and pixels need before it starts.
     pub render_memory_mib: u32,
     /// Heavy renders that may wait for a permit; more answer 429 `busy`.
     pub render_queue: usize,
