@@ -177,12 +177,7 @@ async fn post_typed(s: &TestServer, bytes: Vec<u8>, mime: &str, parts: &[(&str, 
 async fn hostile_uploads_and_values_are_refused_and_the_server_keeps_serving() {
     let dir = scratch("hostile");
     let s = start(config(&dir)).await;
-    let id =
-        s.post_json(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await.json::<serde_json::Value>().await.unwrap()
-            ["id"]
-            .as_str()
-            .unwrap()
-            .to_string();
+    let id = s.posted_id(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await;
     s.wait_ready(&id).await;
 
     // Content sniffing: the bytes decide, whatever the declared content type.
@@ -350,12 +345,7 @@ async fn oversized_request_heads_answer_in_the_error_shape() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn errors_never_echo_a_long_input_whole() {
     let s = start(config(&scratch("echo"))).await;
-    let id =
-        s.post_json(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await.json::<serde_json::Value>().await.unwrap()
-            ["id"]
-            .as_str()
-            .unwrap()
-            .to_string();
+    let id = s.posted_id(r#"{"seed": 8, "params": {"base_faces": 200}}"#).await;
     let width = "9".repeat(7000);
     let err =
         expect_error(s.get(&format!("/v1/planets/{id}/landmask.png?width={width}")).await, 422, "invalid_parameter");

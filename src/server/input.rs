@@ -49,7 +49,6 @@ pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
     digest.iter().take(ID_HEX / 2).map(|b| format!("{b:02x}")).collect()
 }
 
-/// Reads and validates a POST body of either content type.
 /// Reads and validates a POST body of either content type; a map is decoded under `heavy`,
 /// drawing its decoding memory ([`decode_cost`]) from the render memory budget.
 pub async fn read(req: Request<Body>, limits: MapLimits, heavy: &HeavyLimit) -> Result<NewPlanet, ApiError> {
@@ -189,10 +188,17 @@ fn check_land_and_sea(map: &crate::maps::Map) -> Result<(), ApiError> {
 /// the land test's scratch), the pixels a PNG declares in its header, else the most a map may
 /// have.
 pub fn decode_cost(bytes: &[u8], max_pixels: u64) -> u64 {
-    let png = bytes.starts_with(b"\x89PNG\r\n\x1a\n") && bytes.len() >= 24;
-    let be = |i: usize| u64::from(u32::from_be_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]));
-    let pixels = if png { (be(16) * be(20)).min(max_pixels) } else { max_pixels };
-    12 * pixels
+    let declared = png_size(bytes).map(|(w, h)| u64::from(w) * u64::from(h));
+    12 * declared.map_or(max_pixels, |p| p.min(max_pixels))
+}
+
+/// Width and height a PNG declares in its IHDR chunk; `None` for bytes that are no PNG.
+pub fn png_size(bytes: &[u8]) -> Option<(u32, u32)> {
+    if !bytes.starts_with(b"\x89PNG\r\n\x1a\n") || bytes.len() < 24 {
+        return None;
+    }
+    let be = |i: usize| u32::from_be_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]);
+    Some((be(16), be(20)))
 }
 
 /// Decodes a map off the async runtime.

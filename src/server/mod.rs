@@ -272,7 +272,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
 /// The built-in planet: the shipped Earth DEM (ETOPO5 relief and bathymetry), seed 42, default
 /// parameters.
 fn earth_entry() -> Entry {
-    let (width, height) = png_size(EARTH_MAP);
+    let (width, height) = input::png_size(EARTH_MAP).expect("the built-in map is a PNG");
     let map = MapMeta {
         kind: crate::maps::MapKind::Elevation,
         bytes: EARTH_MAP.len(),
@@ -283,12 +283,6 @@ fn earth_entry() -> Entry {
     };
     let input = StoredInput { seed: EARTH_SEED, params: crate::params::Params::default(), map: Some(map) };
     Entry::new(EARTH_ID.to_string(), input, Some(EARTH_MAP))
-}
-
-/// Width and height from a PNG's IHDR chunk.
-fn png_size(png: &[u8]) -> (u32, u32) {
-    let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
-    (be(16), be(20))
 }
 
 /// All routes with their layers (outermost first: trace, CORS, compression, JSON errors, the

@@ -63,6 +63,12 @@ impl TestServer {
         self.client.post(self.url("/v1/planets")).multipart(form).send().await.unwrap()
     }
 
+    /// POSTs a JSON planet request and returns the id of the planet it names.
+    pub async fn posted_id(&self, body: &str) -> String {
+        let rec = self.post_json(body).await.json::<serde_json::Value>().await.unwrap();
+        rec["id"].as_str().unwrap_or_else(|| panic!("no id in {rec}")).to_string()
+    }
+
     pub async fn post_json(&self, body: &str) -> reqwest::Response {
         self.client
             .post(self.url("/v1/planets"))
