@@ -154,6 +154,36 @@ async fn map_upload_builds_and_serves_every_file() {
         heights(&s.client.get(url.replace("{z}/{x}/{y}", "1/1/0")).send().await.unwrap().bytes().await.unwrap(), true);
     let worst = terrarium.iter().zip(&mapbox).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
     assert!(worst <= 0.06, "{worst} m between the encodings");
+    // Cesium terrain: layer.json names relative quantized-mesh tiles; a tile carries the
+    // extensions its Accept asks for, varies by Accept, and is gzipped when accepted.
+    let layer: Value = s.get(&format!("/v1/planets/{id}/terrain/layer.json")).await.json().await.unwrap();
+    assert_eq!(layer["format"], "quantized-mesh-1.0");
+    assert_eq!(layer["scheme"], "tms");
+    let tile_url = |t: &str| {
+        let v = layer["version"].as_str().unwrap();
+        let rel = layer["tiles"][0].as_str().unwrap().replace("{z}/{x}/{y}", t).replace("{version}", v);
+        s.url(&format!("/v1/planets/{id}/terrain/{rel}"))
+    };
+    let plain = s.client.get(tile_url("1/2/1")).send().await.unwrap();
+    assert_eq!(plain.status().as_u16(), 200);
+    assert_eq!(plain.headers()["content-type"], "application/vnd.quantized-mesh");
+    assert!(plain.headers().get_all("vary").iter().any(|v| v.to_str().unwrap().contains("accept")));
+    let plain_tag = plain.headers()["etag"].clone();
+    let plain = plain.bytes().await.unwrap();
+    let accept = "application/vnd.quantized-mesh;extensions=octvertexnormals-watermask-metadata,*/*;q=0.01";
+    let full = s.client.get(tile_url("1/2/1")).header("accept", accept).send().await.unwrap();
+    assert_ne!(full.headers()["etag"], plain_tag);
+    let full = full.bytes().await.unwrap();
+    // The extensions follow the plain tile's bytes: normals (2 bytes per vertex) first.
+    assert!(full.len() > plain.len() && full.starts_with(&plain));
+    let vertices = u32::from_le_bytes(plain[88..92].try_into().unwrap()) as usize;
+    assert_eq!(vertices, 65 * 65);
+    assert_eq!(full[plain.len()], 1);
+    assert_eq!(u32::from_le_bytes(full[plain.len() + 1..plain.len() + 5].try_into().unwrap()) as usize, 2 * vertices);
+    let gz = s.client.get(tile_url("1/2/1")).header("accept-encoding", "gzip").send().await.unwrap();
+    assert_eq!(gz.headers()["content-encoding"], "gzip");
+    let res = s.client.get(tile_url("1/2/1")).header("if-none-match", plain_tag).send().await.unwrap();
+    assert_eq!(res.status().as_u16(), 304);
     // JSON is compressed when the client accepts it.
     let res = s
         .client

@@ -109,6 +109,10 @@ async fn bad_requests_name_their_problem() {
         (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=rgb"), "invalid_parameter", "encoding"),
         (format!("/v1/planets/{id}/dem/1/0/0.png?encoding=mapbox&encoding=mapbox"), "duplicate_parameter", "encoding"),
         (format!("/v1/planets/{id}/dem/tilejson.json?format=png"), "unknown_parameter", "format"),
+        (format!("/v1/planets/{id}/terrain/1/0/0.png"), "invalid_tile", "tile"),
+        (format!("/v1/planets/{id}/terrain/1/0/0.terrain?v=1&v=2"), "duplicate_parameter", "v"),
+        (format!("/v1/planets/{id}/terrain/1/0/0.terrain?extensions=watermask"), "unknown_parameter", "extensions"),
+        (format!("/v1/planets/{id}/terrain/layer.json?v=1"), "unknown_parameter", "v"),
         (format!("/v1/planets/{id}/elevation.tif?width=64&width=128"), "duplicate_parameter", "width"),
         (format!("/v1/planets/{id}/tileset.json?v=1"), "unknown_parameter", "v"),
         (format!("/v1/planets/{id}/tiles/0.glb?v=1"), "unknown_parameter", "v"),
@@ -124,6 +128,11 @@ async fn bad_requests_name_their_problem() {
         let res = s.get(&path).await;
         let want = if tile.starts_with("9999") { 422 } else { 404 };
         assert_eq!(res.status().as_u16(), want, "{path}");
+    }
+    // Cesium's geographic scheme: 2^(z+1) x 2^z tiles, down to zoom 14.
+    for (tile, outside) in [("15/0/0", true), ("1/4/0", true), ("1/0/2", true), ("1/3/1", false), ("300/0/0", true)] {
+        let path = format!("/v1/planets/{id}/terrain/{tile}.terrain");
+        assert_eq!(s.get(&path).await.status().as_u16() == 404, outside, "{path}");
     }
     s.stop().await;
 }

@@ -22,12 +22,10 @@
 //! value, where the ground is dry.
 
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{BaseTree, Refiner, ROOTS};
+use super::tiles::{PlanetTiles, Refiner, ROOTS};
 use crate::geo::{direction, lat_lon};
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
-use crate::mesh::Mesh;
-use crate::params::Params;
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -168,12 +166,12 @@ pub struct Dem {
 }
 
 /// Samples the DEM of `req` from the planet with base mesh `base` and its tree.
-pub fn sample_dem(base: &Mesh, tree: &BaseTree, params: &Params, req: &DemRequest) -> Dem {
+pub fn sample_dem(tiles: &PlanetTiles, req: &DemRequest) -> Dem {
     let (w, h) = (req.width, req.height);
     let blocks: Vec<(u32, u32)> =
         (0..h.div_ceil(BLOCK)).flat_map(|by| (0..w.div_ceil(BLOCK)).map(move |bx| (bx, by))).collect();
     let done: Vec<(Block, usize)> =
-        blocks.par_iter().map(|&(bx, by)| sample_block(base, tree, params, req, bx * BLOCK, by * BLOCK)).collect();
+        blocks.par_iter().map(|&(bx, by)| sample_block(tiles, req, bx * BLOCK, by * BLOCK)).collect();
     let mut ground = vec![0f32; (w * h) as usize];
     let mut water = vec![0f32; (w * h) as usize];
     let mut splits = 0;
@@ -215,160 +213,237 @@ struct Block {
 }
 
 /// Refines below the tree nodes that meet the block's cells and samples them.
-fn sample_block(
-    base: &Mesh,
-    tree: &BaseTree,
-    params: &Params,
-    req: &DemRequest,
+fn sample_block(tiles: &PlanetTiles, req: &DemRequest, col0: u32, row0: u32) -> (Block, usize) {
+    let (cols, rows) = (BLOCK.min(req.width - col0), BLOCK.min(req.height - row0));
+    let window = Window { col0, row0, cols, rows };
+    let surface = Surface::refine(tiles, window.rect(req), req.pixel(), req.rows);
+    let (ground, water) = surface.sample(req, &window, tiles.params().sea_level_m);
+    let splits = surface.splits();
+    (Block { col0, row0, cols, rows, ground, water }, splits)
+}
+
+/// Samples small grids from one surface, refined over `detail`'s bounds for its cells: a
+/// terrain tile's heights and water mask. Every grid must lie inside `detail`'s bounds.
+pub fn sample_grids(tiles: &PlanetTiles, detail: &DemRequest, grids: &[DemRequest]) -> Vec<Dem> {
+    let surface = Surface::refine(tiles, detail.bounds, detail.pixel(), detail.rows);
+    grids
+        .iter()
+        .map(|req| {
+            let window = Window { col0: 0, row0: 0, cols: req.width, rows: req.height };
+            let (ground, water) = surface.sample(req, &window, tiles.params().sea_level_m);
+            Dem { request: *req, ground, water, splits: surface.splits() }
+        })
+        .collect()
+}
+
+/// Cells `col0..col0 + cols` x `row0..row0 + rows` of a request.
+struct Window {
     col0: u32,
     row0: u32,
-) -> (Block, usize) {
-    let (cols, rows) = (BLOCK.min(req.width - col0), BLOCK.min(req.height - row0));
-    let b = &req.bounds;
-    let [dx, dy] = req.pixel();
-    let rect = GeoBounds {
-        west: b.west + f64::from(col0) * dx,
-        east: b.west + f64::from(col0 + cols) * dx,
-        north: req.lat_of(f64::from(row0) - 0.5),
-        south: req.lat_of(f64::from(row0 + rows) - 0.5),
-    };
-    let r = params.radius_m;
-    let region = Region::new(rect);
-    let mut refiner = Refiner::new(base, tree, params);
-    // About one split per cell at the finest, plus the border's.
-    refiner.reserve((cols as usize + 8) * (rows as usize + 8));
-    let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
-    while let Some(node) = stack.pop() {
-        let u = node.map(|v| refiner.mesh().pos(v).normalize());
-        if !region.may_meet(&u) {
-            continue;
+    cols: u32,
+    rows: u32,
+}
+
+impl Window {
+    /// The rectangle the window's cells cover.
+    fn rect(&self, req: &DemRequest) -> GeoBounds {
+        let b = &req.bounds;
+        let [dx, _] = req.pixel();
+        GeoBounds {
+            west: b.west + f64::from(self.col0) * dx,
+            east: b.west + f64::from(self.col0 + self.cols) * dx,
+            north: req.lat_of(f64::from(self.row0) - 0.5),
+            south: req.lat_of(f64::from(self.row0 + self.rows) - 0.5),
         }
-        // A leaf: at least the base mesh's detail, and edges no longer than a cell where the
-        // node's cells are narrowest (a function of the node and the cell size alone, so that
-        // overlapping requests on one grid refine alike, whatever their blocks).
-        let polar = u.iter().map(|x| x.z.abs()).fold(0.0, f64::max).min(1.0);
-        let ew = dx.to_radians() * r * (1.0 - polar * polar).sqrt();
-        let ns = match req.rows {
-            Rows::Degrees => dy.to_radians() * r,
-            Rows::Mercator => ew, // square cells
-        };
-        let target = ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m);
-        if !tree.splits_edge(node[1], node[2]) && u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target {
-            continue;
-        }
-        stack.extend(refiner.children(node));
     }
-    // The faces of the refined (conforming) mesh that may hold a cell: a split's vertex leaves
-    // the split edge (eq. 2), so a node's children cover part of the neighbour across its
-    // refinement edge and the tree's nodes alone do not tile the sphere; the mesh's faces do.
-    let mesh = refiner.mesh();
-    let leaves: Vec<[u32; 3]> = (0..mesh.faces.len() as u32)
-        .map(|f| mesh.corners(f))
-        .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
-        .collect();
-    let n = (cols * rows) as usize;
-    let mut ground = vec![f32::NAN; n];
-    let mut water = vec![f32::NAN; n];
-    let mut owned = vec![false; n];
-    let sea = params.sea_level_m;
-    let lats: Vec<f64> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i))).collect();
-    let lons: Vec<f64> = (0..cols).map(|i| b.lon_of(col0 + i, req.width)).collect();
-    let dirs: Vec<DVec3> = lats.iter().flat_map(|&la| lons.iter().map(move |&lo| direction(la, lo))).collect();
-    // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
-    let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
-        let wgt = weights(n, dirs[i]);
-        let vs = leaf.map(|v| &mesh.vertices[v as usize]);
-        let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].ground).sum();
-        let mut water = f32::NAN;
-        // Water: the face's highest standing water at its dry corners (as `water.rs` does).
-        let wet = vs.iter().filter(|v| v.submerged()).map(|v| v.water).fold(f64::NEG_INFINITY, f64::max);
-        if wet > f64::NEG_INFINITY {
-            let level: f64 =
-                (0..3).map(|k| f64::from(wgt[k]) * if vs[k].submerged() { vs[k].water } else { wet }).sum();
-            if level > g {
-                water = (level - sea) as f32;
+}
+
+/// The planet refined over a rectangle for cells of a given size, and its faces there.
+struct Surface<'a> {
+    tiles: &'a PlanetTiles,
+    /// Always `Some` until dropped (then its buffers go back to `tiles`).
+    refiner: Option<Refiner<'a>>,
+    /// Faces of the refined (conforming) mesh that may meet the rectangle.
+    leaves: Vec<[u32; 3]>,
+}
+
+impl<'a> Surface<'a> {
+    /// Refines below the tree nodes that meet `rect` for cells of `cell` degrees (longitude,
+    /// latitude) whose rows divide latitudes as `rows` does.
+    fn refine(tiles: &'a PlanetTiles, rect: GeoBounds, cell: [f64; 2], rows: Rows) -> Surface<'a> {
+        let [dx, dy] = cell;
+        let params = tiles.params();
+        let tree = tiles.tree();
+        let r = params.radius_m;
+        let region = Region::new(rect);
+        let mut refiner = tiles.refiner();
+        // About one split per cell at the finest, plus the border's.
+        let span = |d: f64, c: f64| ((d / c).ceil().min(1e6) as usize) + 8;
+        refiner.reserve((span(rect.east - rect.west, dx) * span(rect.north - rect.south, dy)).min(1 << 20));
+        let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
+        while let Some(node) = stack.pop() {
+            let u = node.map(|v| refiner.mesh().pos(v).normalize());
+            if !region.may_meet(&u) {
+                continue;
             }
+            // A leaf: at least the base mesh's detail, and edges no longer than a cell where the
+            // node's cells are narrowest (a function of the node and the cell size alone, so
+            // that overlapping requests on one grid refine alike, whatever their blocks).
+            let polar = u.iter().map(|x| x.z.abs()).fold(0.0, f64::max).min(1.0);
+            let ew = dx.to_radians() * r * (1.0 - polar * polar).sqrt();
+            let ns = match rows {
+                Rows::Degrees => dy.to_radians() * r,
+                Rows::Mercator => ew, // square cells
+            };
+            let target = ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m);
+            if !tree.splits_edge(node[1], node[2]) && u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target {
+                continue;
+            }
+            stack.extend(refiner.children(node));
         }
-        ((g - sea) as f32, water)
-    };
-    // Latitude and longitude of each vertex, computed once.
-    let mut lat_lons = vec![(f64::NAN, f64::NAN); mesh.vertices.len()];
-    let mut lat_lon_of = |v: u32| {
-        let slot = &mut lat_lons[v as usize];
-        if slot.0.is_nan() {
-            *slot = lat_lon(mesh.pos(v));
-        }
-        *slot
-    };
-    const EPS: f64 = 1e-7;
-    for leaf in &leaves {
-        let p = leaf.map(|v| mesh.pos(v));
-        let n = [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])];
-        let u = p.map(DVec3::normalize);
-        let size = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
-        let ll = leaf.map(&mut lat_lon_of);
-        let (lo, hi, lon) = if size < 0.01 && ll.iter().all(|x| x.0.abs() < 89.0) {
-            // A small face away from the poles: its corners' ranges, widened by how far an
-            // edge's great circle bulges poleward (under (L^2 / 8) tan(lat) for an arc of L
-            // radians).
-            let polar = ll.iter().map(|x| x.0.abs()).fold(0.0, f64::max).to_radians();
-            let bulge = (size * size / 8.0 * (1.0 + polar.tan())).to_degrees();
-            let la = ll[0].1;
-            let (lb, lc) = (la + wrap180(ll[1].1 - la), la + wrap180(ll[2].1 - la));
-            let lats = ll.map(|x| x.0);
-            let (lo, hi) = (lats[0].min(lats[1]).min(lats[2]), lats[0].max(lats[1]).max(lats[2]));
-            (lo - bulge, hi + bulge, Some((la.min(lb).min(lc), la.max(lb).max(lc))))
-        } else {
-            triangle_bounds(u, &n)
+        // The faces of the refined (conforming) mesh that may hold a cell: a split's vertex
+        // leaves the split edge (eq. 2), so a node's children cover part of the neighbour across
+        // its refinement edge and the tree's nodes alone do not tile the sphere; the mesh's
+        // faces do. The index lists the base faces near the rectangle and every face a split
+        // added.
+        let mesh = refiner.mesh();
+        let leaves: Vec<[u32; 3]> = tiles
+            .faces()
+            .candidates(&rect, mesh.faces.len())
+            .into_iter()
+            .map(|f| mesh.corners(f))
+            .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
+            .collect();
+        Surface { tiles, refiner: Some(refiner), leaves }
+    }
+
+    fn refiner(&self) -> &Refiner<'a> {
+        self.refiner.as_ref().expect("a surface's refiner until dropped")
+    }
+
+    /// Splits made below the base mesh.
+    fn splits(&self) -> usize {
+        self.refiner().splits()
+    }
+
+    /// Ground and water (metres relative to `sea`) of the window's cells of `req`, row-major.
+    fn sample(&self, req: &DemRequest, window: &Window, sea: f64) -> (Vec<f32>, Vec<f32>) {
+        let Window { col0, row0, cols, rows } = *window;
+        let rect = window.rect(req);
+        let [dx, _] = req.pixel();
+        let b = &req.bounds;
+        let mesh = self.refiner().mesh();
+        let leaves = &self.leaves;
+        let n = (cols * rows) as usize;
+        let mut ground = vec![f32::NAN; n];
+        let mut water = vec![f32::NAN; n];
+        let mut owned = vec![false; n];
+        let lats: Vec<f64> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i))).collect();
+        let lons: Vec<f64> = (0..cols).map(|i| b.lon_of(col0 + i, req.width)).collect();
+        let dirs: Vec<DVec3> = lats.iter().flat_map(|&la| lons.iter().map(move |&lo| direction(la, lo))).collect();
+        // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
+        let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
+            let wgt = weights(n, dirs[i]);
+            let vs = leaf.map(|v| &mesh.vertices[v as usize]);
+            let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].ground).sum();
+            let mut water = f32::NAN;
+            // Water: the face's highest standing water at its dry corners (as `water.rs` does).
+            let wet = vs.iter().filter(|v| v.submerged()).map(|v| v.water).fold(f64::NEG_INFINITY, f64::max);
+            if wet > f64::NEG_INFINITY {
+                let level: f64 =
+                    (0..3).map(|k| f64::from(wgt[k]) * if vs[k].submerged() { vs[k].water } else { wet }).sum();
+                if level > g {
+                    water = (level - sea) as f32;
+                }
+            }
+            ((g - sea) as f32, water)
         };
-        let r0 = ((req.row_of(hi + EPS) - f64::from(row0)).ceil().max(0.0)) as u32;
-        let r1 = (req.row_of(lo - EPS) - f64::from(row0)).floor();
-        if r1 < f64::from(r0) {
-            continue;
-        }
-        let r1 = (r1 as u32).min(rows - 1);
-        let ranges: Vec<(u32, u32)> = match lon {
-            None => vec![(0, cols - 1)],
-            Some((a, z)) => [0.0, -360.0, 360.0]
-                .iter()
-                .filter_map(|turn| {
-                    let c0 = ((a + turn - EPS - rect.west) / dx - 0.5).ceil().max(0.0);
-                    let c1 = ((z + turn + EPS - rect.west) / dx - 0.5).floor().min(f64::from(cols) - 1.0);
-                    (c1 >= c0).then_some((c0 as u32, c1 as u32))
-                })
-                .collect(),
+        // Latitude and longitude of each vertex, computed once.
+        let mut lat_lons = vec![(f64::NAN, f64::NAN); mesh.vertices.len()];
+        let mut lat_lon_of = |v: u32| {
+            let slot = &mut lat_lons[v as usize];
+            if slot.0.is_nan() {
+                *slot = lat_lon(mesh.pos(v));
+            }
+            *slot
         };
-        for row in r0..=r1 {
-            for &(c0, c1) in &ranges {
-                for col in c0..=c1 {
-                    let i = (row * cols + col) as usize;
-                    if !owned[i] && inside(&n, dirs[i]) {
-                        (ground[i], water[i]) = sample(i, leaf, &n);
-                        owned[i] = true;
+        const EPS: f64 = 1e-7;
+        for leaf in leaves {
+            let p = leaf.map(|v| mesh.pos(v));
+            let n = [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])];
+            let u = p.map(DVec3::normalize);
+            let size = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            let ll = leaf.map(&mut lat_lon_of);
+            let (lo, hi, lon) = if size < 0.01 && ll.iter().all(|x| x.0.abs() < 89.0) {
+                // A small face away from the poles: its corners' ranges, widened by how far an
+                // edge's great circle bulges poleward (under (L^2 / 8) tan(lat) for an arc of L
+                // radians).
+                let polar = ll.iter().map(|x| x.0.abs()).fold(0.0, f64::max).to_radians();
+                let bulge = (size * size / 8.0 * (1.0 + polar.tan())).to_degrees();
+                let la = ll[0].1;
+                let (lb, lc) = (la + wrap180(ll[1].1 - la), la + wrap180(ll[2].1 - la));
+                let lats = ll.map(|x| x.0);
+                let (lo, hi) = (lats[0].min(lats[1]).min(lats[2]), lats[0].max(lats[1]).max(lats[2]));
+                (lo - bulge, hi + bulge, Some((la.min(lb).min(lc), la.max(lb).max(lc))))
+            } else {
+                triangle_bounds(u, &n)
+            };
+            let r0 = ((req.row_of(hi + EPS) - f64::from(row0)).ceil().max(0.0)) as u32;
+            let r1 = (req.row_of(lo - EPS) - f64::from(row0)).floor();
+            if r1 < f64::from(r0) {
+                continue;
+            }
+            let r1 = (r1 as u32).min(rows - 1);
+            let ranges: Vec<(u32, u32)> = match lon {
+                None => vec![(0, cols - 1)],
+                Some((a, z)) => [0.0, -360.0, 360.0]
+                    .iter()
+                    .filter_map(|turn| {
+                        let c0 = ((a + turn - EPS - rect.west) / dx - 0.5).ceil().max(0.0);
+                        let c1 = ((z + turn + EPS - rect.west) / dx - 0.5).floor().min(f64::from(cols) - 1.0);
+                        (c1 >= c0).then_some((c0 as u32, c1 as u32))
+                    })
+                    .collect(),
+            };
+            for row in r0..=r1 {
+                for &(c0, c1) in &ranges {
+                    for col in c0..=c1 {
+                        let i = (row * cols + col) as usize;
+                        if !owned[i] && inside(&n, dirs[i]) {
+                            (ground[i], water[i]) = sample(i, leaf, &n);
+                            owned[i] = true;
+                        }
                     }
                 }
             }
         }
-    }
-    // A cell no triangle claimed (rounding on an edge or corner): the leaf it lies least outside.
-    for i in 0..n {
-        if !owned[i] {
-            let d = dirs[i];
-            let planes = |leaf: &[u32; 3]| {
-                let p = leaf.map(|v| mesh.pos(v));
-                [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])]
-            };
-            let score = |leaf: &[u32; 3]| {
-                let n = planes(leaf);
-                n.iter().map(|m| d.dot(*m) / m.length().max(f64::MIN_POSITIVE)).fold(f64::INFINITY, f64::min)
-            };
-            if let Some(best) = leaves.iter().max_by(|a, b| score(a).total_cmp(&score(b))) {
-                (ground[i], water[i]) = sample(i, best, &planes(best));
+        // A cell no triangle claimed (rounding on an edge or corner): the leaf it lies least outside.
+        for i in 0..n {
+            if !owned[i] {
+                let d = dirs[i];
+                let planes = |leaf: &[u32; 3]| {
+                    let p = leaf.map(|v| mesh.pos(v));
+                    [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])]
+                };
+                let score = |leaf: &[u32; 3]| {
+                    let n = planes(leaf);
+                    n.iter().map(|m| d.dot(*m) / m.length().max(f64::MIN_POSITIVE)).fold(f64::INFINITY, f64::min)
+                };
+                if let Some(best) = leaves.iter().max_by(|a, b| score(a).total_cmp(&score(b))) {
+                    (ground[i], water[i]) = sample(i, best, &planes(best));
+                }
             }
         }
+        (ground, water)
     }
-    let splits = refiner.splits();
-    (Block { col0, row0, cols, rows, ground, water }, splits)
+}
+
+impl Drop for Surface<'_> {
+    fn drop(&mut self) {
+        if let Some(refiner) = self.refiner.take() {
+            self.tiles.recycle(refiner);
+        }
+    }
 }
 
 /// A block's rectangle as half-spaces: the wedge between its west and east meridians (when
@@ -385,7 +460,9 @@ impl Region {
         let (w, e) = (rect.west.to_radians(), rect.east.to_radians());
         let meridians = (rect.east - rect.west < 180.0)
             .then(|| [DVec3::new(-w.sin(), w.cos(), 0.0), DVec3::new(e.sin(), -e.cos(), 0.0)]);
-        Region { meridians, z: [rect.south.to_radians().sin(), rect.north.to_radians().sin()] }
+        // A grid whose cells reach past a pole (the ring of a terrain tile) reaches the pole.
+        let z = |lat: f64| lat.clamp(-90.0, 90.0).to_radians().sin();
+        Region { meridians, z: [z(rect.south), z(rect.north)] }
     }
 
     /// Whether the spherical triangle with unit corners `u` may meet the rectangle (never

@@ -1,6 +1,7 @@
 use super::*;
 use crate::export::test_planet;
 use crate::export::tiles::PlanetTiles;
+use crate::params::Params;
 use std::sync::{Arc, OnceLock};
 
 fn tiles() -> &'static PlanetTiles {

@@ -9,9 +9,11 @@
 pub mod climate;
 pub mod cog;
 pub mod dem;
+pub mod face_index;
 pub mod geojson;
 pub mod glb;
 pub mod preview;
+pub mod quantized_mesh;
 pub mod raster;
 pub mod terrain_rgb;
 pub mod tiles;

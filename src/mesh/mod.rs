@@ -116,6 +116,26 @@ pub struct Mesh {
     pub channels: Option<std::sync::Arc<channels::Channels>>,
 }
 
+impl Mesh {
+    /// Makes this mesh a copy of `other`, reusing this one's buffers (no allocation, and no
+    /// fresh pages to fault in, once they are large enough).
+    pub fn copy_from(&mut self, other: &Mesh) {
+        self.radius = other.radius;
+        self.vertices.clone_from(&other.vertices);
+        self.edges.clone_from(&other.edges);
+        self.faces.clone_from(&other.faces);
+        self.guide.clone_from(&other.guide);
+        self.channels.clone_from(&other.channels);
+    }
+
+    /// Bytes of the buffers' capacity.
+    pub fn capacity_bytes(&self) -> usize {
+        self.vertices.capacity() * std::mem::size_of::<Vertex>()
+            + self.edges.capacity() * std::mem::size_of::<Edge>()
+            + self.faces.capacity() * std::mem::size_of::<Face>()
+    }
+}
+
 impl Vertex {
     pub fn new(pos: DVec3, seed: u32) -> Vertex {
         Vertex {

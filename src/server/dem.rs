@@ -122,33 +122,11 @@ pub async fn tile(
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
     let entry = planet_entry(&state, &id).await?;
-    let malformed = || {
-        ApiError::unprocessable(
-            "invalid_tile",
-            "tile",
-            format!("{z}/{x}/{file:?} is no tile: expected whole numbers z/x/y and .png"),
-        )
-    };
-    let number = |s: &str| {
-        if s.len() <= 10 && !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) {
-            s.parse::<u64>().ok()
-        } else {
-            None
-        }
-    };
-    let y = file.strip_suffix(".png").and_then(number).ok_or_else(malformed)?;
-    let (z, x) = (number(&z).ok_or_else(malformed)?, number(&x).ok_or_else(malformed)?);
+    let (zoom, x, y) = tile_address(&z, &x, &file, "png")?;
     let encoding = parse_encoding(query.as_deref().unwrap_or(""))?;
-    let zoom = u8::try_from(z).unwrap_or(u8::MAX);
-    // Ten digits may pass 2^32: such a tile lies outside every zoom's grid.
-    let outside = || ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below 2^z)"));
-    let (x, y) = (u32::try_from(x).map_err(|_| outside())?, u32::try_from(y).map_err(|_| outside())?);
-    terrain_rgb::tile_bounds(zoom, x, y).map_err(|e| match e {
-        TileError::TooDeep => ApiError::not_found(&format!("tile {z}/{x}/{y} (the deepest zoom is {MAX_ZOOM})")),
-        TileError::Outside => ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below 2^z)")),
-    })?;
+    terrain_rgb::tile_bounds(zoom, x, y).map_err(|e| tile_missing(e, zoom, x, y, MAX_ZOOM))?;
     let derived = Derived {
-        route: format!("dem/{z}/{x}/{y}.png"),
+        route: format!("dem/{zoom}/{x}/{y}.png"),
         norm: format!("encoding={}", encoding.name()),
         content_type: "image/png",
         cost: cost(512 * 512 * BYTES_PER_PIXEL, None, true),
@@ -159,6 +137,40 @@ pub async fn tile(
         terrain_rgb::dem_tile_png(&tiling, zoom, x, y, encoding).map_err(|_| ApiError::internal("tile checked"))
     })
     .await
+}
+
+/// The zoom, `x` and `y` of a tile route's `{z}/{x}/{y}.{suffix}`: whole numbers, or 422
+/// `invalid_tile`; numbers too large for any zoom's grid are 404.
+pub(super) fn tile_address(z: &str, x: &str, file: &str, suffix: &str) -> Result<(u8, u32, u32), ApiError> {
+    let malformed = || {
+        ApiError::unprocessable(
+            "invalid_tile",
+            "tile",
+            format!("{z}/{x}/{file:?} is no tile: expected whole numbers z/x/y and .{suffix}"),
+        )
+    };
+    let number = |s: &str| {
+        if s.len() <= 10 && !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) {
+            s.parse::<u64>().ok()
+        } else {
+            None
+        }
+    };
+    let y = file.strip_suffix(suffix).and_then(|f| f.strip_suffix('.')).and_then(number).ok_or_else(malformed)?;
+    let (z, x) = (number(z).ok_or_else(malformed)?, number(x).ok_or_else(malformed)?);
+    // Ten digits may pass 2^32: such a tile lies outside every zoom's grid.
+    let outside = || ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are below the zoom's grid size)"));
+    let (x, y) = (u32::try_from(x).map_err(|_| outside())?, u32::try_from(y).map_err(|_| outside())?);
+    let z = u8::try_from(z).map_err(|_| ApiError::not_found(&format!("tile {z}/{x}/{y} (no zoom is that deep)")))?;
+    Ok((z, x, y))
+}
+
+/// The 404 of a tile address outside a scheme whose deepest zoom is `max_zoom`.
+pub(super) fn tile_missing(e: TileError, z: u8, x: u32, y: u32, max_zoom: u8) -> ApiError {
+    match e {
+        TileError::TooDeep => ApiError::not_found(&format!("tile {z}/{x}/{y} (the deepest zoom is {max_zoom})")),
+        TileError::Outside => ApiError::not_found(&format!("tile {z}/{x}/{y} (x and y are outside the zoom's grid)")),
+    }
 }
 
 #[cfg(test)]

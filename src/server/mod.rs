@@ -21,6 +21,7 @@ pub mod resources;
 pub mod snapshot;
 pub mod state;
 pub mod store;
+pub mod terrain;
 pub mod tiles;
 pub mod transport;
 pub mod viewer;
@@ -302,14 +303,21 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
     let cors = CorsLayer::new()
         .allow_origin(origin)
         .allow_methods([Method::GET, Method::HEAD, Method::POST, Method::DELETE])
-        .allow_headers([header::CONTENT_TYPE, header::IF_NONE_MATCH, header::AUTHORIZATION])
+        .allow_headers([header::ACCEPT, header::CONTENT_TYPE, header::IF_NONE_MATCH, header::AUTHORIZATION])
         .expose_headers([header::ETAG, header::LOCATION, header::RETRY_AFTER, header::WWW_AUTHENTICATE])
         .max_age(Duration::from_secs(86_400));
     let textual = |_: StatusCode, _: Version, h: &HeaderMap, _: &axum::http::Extensions| {
         let ct = h.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
-        ["application/json", "application/geo+json", "application/yaml", "application/javascript", "text/"]
-            .iter()
-            .any(|t| ct.starts_with(t))
+        [
+            "application/json",
+            "application/geo+json",
+            "application/yaml",
+            "application/javascript",
+            "text/",
+            terrain::CONTENT_TYPE,
+        ]
+        .iter()
+        .any(|t| ct.starts_with(t))
     };
     let compression = CompressionLayer::new().compress_when(SizeAbove::new(256).and(textual));
     Ok(Router::new()
@@ -330,6 +338,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/dem.tif", get(dem::dem))
         .route("/v1/planets/{id}/dem/tilejson.json", get(dem::tilejson))
         .route("/v1/planets/{id}/dem/{z}/{x}/{file}", get(dem::tile))
+        .route("/v1/planets/{id}/terrain/layer.json", get(terrain::layer))
+        .route("/v1/planets/{id}/terrain/{z}/{x}/{file}", get(terrain::tile))
         .route("/v1/planets/{id}/render.png", get(snapshot::png))
         .route("/v1/planets/{id}/render.jpg", get(snapshot::jpeg))
         .route("/v1/planets/{id}/tileset.json", get(tiles::tileset))

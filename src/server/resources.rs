@@ -201,7 +201,7 @@ fn render(
 /// splits of an elevation map planet follow the map where it resolves them; 7: rivers' water
 /// as wide as their channels, a regional elevation map's coast outside its bounds), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-const ANSWERS_REVISION: &str = "7";
+pub const ANSWERS_REVISION: &str = "7";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

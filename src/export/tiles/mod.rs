@@ -87,7 +87,14 @@ pub struct PlanetTiles {
     max_level: u8,
     placements: Mutex<HashMap<TileKey, Placement>>,
     planet_bounds: OnceLock<OrientedBox>,
+    /// The base mesh's faces by cell, made by the first DEM.
+    faces: OnceLock<crate::export::face_index::FaceIndex>,
+    /// Buffers of finished refinements, for the next ones (at most [`MAX_SPARES`]).
+    spares: Mutex<Vec<crate::mesh::Mesh>>,
 }
+
+/// Most spare mesh buffers a tiling keeps.
+const MAX_SPARES: usize = 2;
 
 impl PlanetTiles {
     pub fn new(planet: Arc<Planet>, params: Params) -> Result<PlanetTiles, NotBisected> {
@@ -101,7 +108,16 @@ impl PlanetTiles {
             .last()
             .unwrap_or(0);
         let placements = Mutex::new(HashMap::new());
-        Ok(PlanetTiles { planet, params, tree, max_level, placements, planet_bounds: OnceLock::new() })
+        Ok(PlanetTiles {
+            planet,
+            params,
+            tree,
+            max_level,
+            placements,
+            planet_bounds: OnceLock::new(),
+            faces: OnceLock::new(),
+            spares: Mutex::new(Vec::new()),
+        })
     }
 
     pub fn params(&self) -> &Params {
@@ -114,7 +130,44 @@ impl PlanetTiles {
 
     /// The DEM of `req` ([`crate::export::dem`]), refined along this planet's tree.
     pub fn dem(&self, req: &crate::export::dem::DemRequest) -> crate::export::dem::Dem {
-        crate::export::dem::sample_dem(&self.planet.mesh, &self.tree, &self.params, req)
+        crate::export::dem::sample_dem(self, req)
+    }
+
+    /// Small grids sampled from one surface refined for `detail`'s cells
+    /// ([`crate::export::dem::sample_grids`]).
+    pub fn dem_grids(
+        &self,
+        detail: &crate::export::dem::DemRequest,
+        grids: &[crate::export::dem::DemRequest],
+    ) -> Vec<crate::export::dem::Dem> {
+        crate::export::dem::sample_grids(self, detail, grids)
+    }
+
+    /// The bisection tree of the base mesh.
+    pub(crate) fn tree(&self) -> &BaseTree {
+        &self.tree
+    }
+
+    /// The base mesh's faces by cell.
+    pub(crate) fn faces(&self) -> &crate::export::face_index::FaceIndex {
+        self.faces.get_or_init(|| crate::export::face_index::FaceIndex::new(&self.planet.mesh))
+    }
+
+    /// A refiner below this planet's base mesh, on spare buffers when there are some; give
+    /// them back with [`PlanetTiles::recycle`].
+    pub(crate) fn refiner(&self) -> Refiner<'_> {
+        let spare = self.spares.lock().expect("spares lock").pop();
+        Refiner::new(&self.planet.mesh, &self.tree, &self.params).with_spare(spare)
+    }
+
+    /// Keeps a finished refiner's buffers for the next one.
+    pub(crate) fn recycle(&self, mut refiner: Refiner<'_>) {
+        if let Some(mesh) = refiner.take_buffers() {
+            let mut spares = self.spares.lock().expect("spares lock");
+            if spares.len() < MAX_SPARES {
+                spares.push(mesh);
+            }
+        }
     }
 
     /// The deepest level: [`MAX_LEVEL`], or less where edges would get shorter than
@@ -130,7 +183,12 @@ impl PlanetTiles {
 
     /// Bytes the tiling keeps: the tree's maps and the remembered placements (estimate).
     pub fn bytes(&self) -> usize {
-        self.tree.bytes() + self.placements.lock().expect("placements lock").len() * 256
+        // The spares it may keep count from the start: each about the base mesh and a tile's
+        // splits.
+        self.tree.bytes()
+            + self.placements.lock().expect("placements lock").len() * 256
+            + self.faces.get().map_or(0, |f| f.bytes())
+            + MAX_SPARES * self.planet.mesh.capacity_bytes() * 5 / 4
     }
 
     /// Geometric error of a level, metres: its nominal edge length.
@@ -154,8 +212,10 @@ impl PlanetTiles {
     /// function of the key alone: no other tile is made or needed.
     pub fn content(&self, key: TileKey) -> TileContent {
         assert!(key.level <= self.max_level, "tile {key} is deeper than level {}", self.max_level);
-        let mut refiner = Refiner::new(&self.planet.mesh, &self.tree, &self.params);
-        content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params)
+        let mut refiner = self.refiner();
+        let content = content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params);
+        self.recycle(refiner);
+        content
     }
 
     /// The content of `key`, placed (which places its ancestors first).

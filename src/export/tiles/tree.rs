@@ -101,13 +101,35 @@ pub struct Refiner<'a> {
     params: &'a Params,
     /// The base mesh with this refiner's splits, made on the first split.
     refined: Option<Mesh>,
+    /// Buffers to copy the base mesh into on the first split (see [`Refiner::with_spare`]).
+    spare: Option<Mesh>,
     midpoints: HashMap<u64, u32>,
     edges: HashMap<u64, u32>,
 }
 
 impl<'a> Refiner<'a> {
     pub fn new(base: &'a Mesh, tree: &'a BaseTree, params: &'a Params) -> Refiner<'a> {
-        Refiner { base, tree, params, refined: None, midpoints: HashMap::default(), edges: HashMap::default() }
+        Refiner {
+            base,
+            tree,
+            params,
+            refined: None,
+            spare: None,
+            midpoints: HashMap::default(),
+            edges: HashMap::default(),
+        }
+    }
+
+    /// Copies the base mesh into `spare`'s buffers on the first split instead of new ones:
+    /// on a large planet, the fresh pages of a new copy cost more than the copy.
+    pub fn with_spare(mut self, spare: Option<Mesh>) -> Refiner<'a> {
+        self.spare = spare;
+        self
+    }
+
+    /// The buffers this refiner holds (the refined mesh, or the unused spare), for another.
+    pub fn take_buffers(&mut self) -> Option<Mesh> {
+        self.refined.take().or_else(|| self.spare.take())
     }
 
     /// Makes room for about `splits` more splits (their midpoints and edges).
@@ -141,7 +163,14 @@ impl<'a> Refiner<'a> {
         let params = self.params;
         let guide = self.base.guide.clone();
         let guide = guide.as_deref();
-        let mesh = self.refined.get_or_insert_with(|| self.base.clone());
+        let (base, spare) = (self.base, &mut self.spare);
+        let mesh = self.refined.get_or_insert_with(|| match spare.take() {
+            Some(mut m) => {
+                m.copy_from(base);
+                m
+            }
+            None => base.clone(),
+        });
         let mut sites: Vec<SplitSite> = Vec::new();
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
