@@ -130,17 +130,23 @@ enum Command {
     /// Serve planets over HTTP (see openapi.yaml); without options, the built-in planet `earth`
     /// on 127.0.0.1:8080 with inputs stored under ./data.
     Serve(ServeArgs),
-    /// Write the planet as 3D Tiles 1.1: tileset.json, tiles/{key}.glb and the external tilesets
-    /// tiles/{key}.json, as served by `serve`; the last level written has no children.
+    /// Write the planet as a static tile set, the same bytes as `serve` answers: 3D Tiles 1.1
+    /// (tileset.json, tiles/{key}.glb, tiles/{key}.json), Cesium quantized-mesh terrain
+    /// (layer.json, {z}/{x}/{y}.terrain with normals, water mask and metadata) or MapLibre
+    /// elevation tiles (tilejson.json, {z}/{x}/{y}.png). The last level written has no children.
     Tiles {
         #[command(flatten)]
         planet: PlanetArgs,
         /// Output directory.
         #[arg(long, default_value = "tiles")]
         out: PathBuf,
-        /// Levels to write: level 0 has 8 tiles, each further level four times as many.
+        /// Levels to write. 3D Tiles: level 0 has 8 tiles; quantized-mesh: 2; terrarium and
+        /// mapbox: 1; each further level four times as many.
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=9))]
         levels: u8,
+        /// 3dtiles, quantized-mesh, terrarium or mapbox (Terrain-RGB elevation tiles).
+        #[arg(long, default_value = "3dtiles", value_parser = ["3dtiles", "quantized-mesh", "terrarium", "mapbox"])]
+        format: String,
     },
     /// Write a DEM of a region as a Cloud-Optimized GeoTIFF (float32, EPSG:4326): band 1 the
     /// ground and band 2 the water surface (NaN where dry), metres relative to sea level, at
@@ -490,12 +496,21 @@ fn out_file_name(out: &std::path::Path) -> Result<&str, String> {
     }
 }
 
-fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8) -> Result<(), String> {
+fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8, format: &str) -> Result<(), String> {
+    use riverworld::export::{terrain_rgb::Encoding, tile_sets};
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
     let tiles = riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone())
         .map_err(|e| e.to_string())?;
-    let stats = tiles.write_files(out, levels).map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
+    let name = format!("seed {}", spec.seed);
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
+    let stats = match format {
+        "quantized-mesh" => tile_sets::write_quantized_mesh(&tiles, out, levels, &name),
+        "terrarium" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Terrarium),
+        "mapbox" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Mapbox),
+        _ => tiles.write_files(out, levels),
+    }
+    .map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
     println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
     Ok(())
 }
@@ -570,7 +585,7 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::Tiles { planet, out, levels } => match run_tiles(&planet, &out, levels) {
+        Command::Tiles { planet, out, levels, format } => match run_tiles(&planet, &out, levels, &format) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("error: {e}");

@@ -16,6 +16,7 @@ pub mod preview;
 pub mod quantized_mesh;
 pub mod raster;
 pub mod terrain_rgb;
+pub mod tile_sets;
 pub mod tiles;
 pub mod view;
 pub mod water;

@@ -177,8 +177,14 @@ fn ecef(lon: f64, lat: f64, h: f64) -> [f64; 3] {
     geodetic_to_ecef(lon, lat, h)
 }
 
-/// The quantized-mesh tile `z/x/y` of the planet, uncompressed.
-pub fn terrain_tile(tiles: &PlanetTiles, z: u8, x: u32, y: u32, ext: Extensions) -> Result<Vec<u8>, TileError> {
+/// The quantized-mesh tile `z/x/y` of the planet, uncompressed; its metadata lists descendants
+/// down to `max_zoom` ([`MAX_ZOOM`] for the server, the last level written for a static export).
+pub fn terrain_tile(
+    tiles: &PlanetTiles,
+    (z, x, y): (u8, u32, u32),
+    ext: Extensions,
+    max_zoom: u8,
+) -> Result<Vec<u8>, TileError> {
     let b = tile_bounds(z, x, y)?;
     let (h, mask) = sample(tiles, &b, ext.water_mask);
     let n = GRID + 3;
@@ -276,17 +282,19 @@ pub fn terrain_tile(tiles: &PlanetTiles, z: u8, x: u32, y: u32, ext: Extensions)
         options.include_water_mask = true;
         options.water_mask = mask;
     }
-    if ext.metadata && z < MAX_ZOOM {
+    let max_zoom = max_zoom.min(MAX_ZOOM);
+    if ext.metadata && z < max_zoom {
         options.include_metadata = true;
-        options.metadata = Some(TileMetadata::for_tile(x, y, z, MAX_ZOOM.min(z + METADATA_LEVELS)));
+        options.metadata = Some(TileMetadata::for_tile(x, y, z, max_zoom.min(z + METADATA_LEVELS)));
     }
     Ok(QuantizedMeshEncoder::new(header, vertices, indices, edges).encode_with_options(&options))
 }
 
-/// `layer.json`: tiles at `{z}/{x}/{y}.terrain?v={version}` relative to it, every level of the
-/// scheme available down to [`MAX_ZOOM`].
-pub fn layer_json(name: &str, version: &str) -> String {
-    let available: Vec<_> = (0..=MAX_ZOOM)
+/// `layer.json`: tiles at `{z}/{x}/{y}.terrain?v={version}` relative to it, every tile of the
+/// scheme available down to `max_zoom` (at most [`MAX_ZOOM`]).
+pub fn layer_json(name: &str, version: &str, max_zoom: u8) -> String {
+    let max_zoom = max_zoom.min(MAX_ZOOM);
+    let available: Vec<_> = (0..=max_zoom)
         .map(|z| json!([{ "startX": 0, "startY": 0, "endX": (2u32 << z) - 1, "endY": (1u32 << z) - 1 }]))
         .collect();
     let doc = json!({
@@ -301,7 +309,7 @@ pub fn layer_json(name: &str, version: &str) -> String {
         "tiles": ["{z}/{x}/{y}.terrain?v={version}"],
         "bounds": [-180.0, -90.0, 180.0, 90.0],
         "minzoom": 0,
-        "maxzoom": MAX_ZOOM,
+        "maxzoom": max_zoom,
         "available": available,
         "extensions": ["octvertexnormals", "watermask", "metadata"],
         "attribution": "",

@@ -143,7 +143,7 @@ fn accept_headers_choose_the_extensions() {
 #[test]
 fn a_tile_is_the_planets_surface_on_a_grid() {
     let (z, x, y) = (2, 5, 1);
-    let bytes = terrain_tile(tiles(), z, x, y, Extensions::default()).unwrap();
+    let bytes = terrain_tile(tiles(), (z, x, y), Extensions::default(), MAX_ZOOM).unwrap();
     let t = read(&bytes);
     let side = (GRID + 1) as usize;
     assert_eq!(t.u.len(), side * side);
@@ -193,7 +193,7 @@ fn side_heights(a: &Read, side: usize) -> Vec<f64> {
 #[test]
 fn neighbours_share_their_borders() {
     let t = tiles();
-    let get = |z, x, y| read(&terrain_tile(t, z, x, y, Extensions::default()).unwrap());
+    let get = |z, x, y| read(&terrain_tile(t, (z, x, y), Extensions::default(), MAX_ZOOM).unwrap());
     for (z, x, y) in [(3u8, 4u32, 2u32), (5, 40, 20), (1, 3, 0), (4, 0, 9)] {
         let here = get(z, x, y);
         // East neighbour (across the antimeridian for the last column), then north.
@@ -220,7 +220,7 @@ fn extensions_are_written_when_asked() {
     // A tile with both land and sea: its mask is a grid.
     let mixed = (0..8u32)
         .flat_map(|x| (0..4u32).map(move |y| (x, y)))
-        .map(|(x, y)| read(&terrain_tile(t, 2, x, y, Extensions::ALL).unwrap()))
+        .map(|(x, y)| read(&terrain_tile(t, (2, x, y), Extensions::ALL, MAX_ZOOM).unwrap()))
         .find(|r| r.extensions.iter().any(|(id, b)| *id == 2 && b.len() == 65536))
         .expect("a level-2 tile with a coast");
     let ids: Vec<u8> = mixed.extensions.iter().map(|e| e.0).collect();
@@ -249,16 +249,16 @@ fn extensions_are_written_when_asked() {
     assert!(distinct.len() > 20);
     assert!(decode(&normals[..2]).is_finite());
     // Selected extensions only.
-    let one = read(&terrain_tile(t, 2, 0, 0, Extensions { metadata: true, ..Default::default() }).unwrap());
+    let one = read(&terrain_tile(t, (2, 0, 0), Extensions { metadata: true, ..Default::default() }, MAX_ZOOM).unwrap());
     assert_eq!(one.extensions.iter().map(|e| e.0).collect::<Vec<_>>(), vec![4]);
     // The deepest level lists no descendants.
-    let deepest = read(&terrain_tile(t, MAX_ZOOM, 0, 0, Extensions::ALL).unwrap());
+    let deepest = read(&terrain_tile(t, (MAX_ZOOM, 0, 0), Extensions::ALL, MAX_ZOOM).unwrap());
     assert_eq!(deepest.extensions.iter().map(|e| e.0).collect::<Vec<_>>(), vec![1, 2]);
 }
 
 #[test]
 fn the_encoders_crate_reads_what_this_decoder_reads() {
-    let bytes = terrain_tile(tiles(), 3, 9, 5, Extensions::ALL).unwrap();
+    let bytes = terrain_tile(tiles(), (3, 9, 5), Extensions::ALL, MAX_ZOOM).unwrap();
     let ours = read(&bytes);
     let theirs = quantized_mesh::DecodedMesh::decode(&bytes).unwrap();
     assert_eq!(theirs.vertices.height, ours.h);
@@ -268,7 +268,7 @@ fn the_encoders_crate_reads_what_this_decoder_reads() {
 
 #[test]
 fn layer_json_names_the_tiles() {
-    let doc: serde_json::Value = serde_json::from_str(&layer_json("earth", "abc")).unwrap();
+    let doc: serde_json::Value = serde_json::from_str(&layer_json("earth", "abc", MAX_ZOOM)).unwrap();
     assert_eq!(doc["format"], "quantized-mesh-1.0");
     assert_eq!(doc["tiles"][0], "{z}/{x}/{y}.terrain?v={version}");
     assert_eq!(doc["version"], "abc");

@@ -22,7 +22,7 @@ use std::sync::Arc;
 pub const CONTENT_TYPE: &str = "application/vnd.quantized-mesh";
 
 /// The `version` layer.json gives, substituted into the tiles' `?v=`.
-fn version() -> String {
+pub fn version() -> String {
     format!("1.0.{ANSWERS_REVISION}")
 }
 
@@ -41,7 +41,10 @@ pub async fn layer(
         content_type: "application/json",
         cost: cost(1 << 20, None, false),
     };
-    cached(state, entry, derived, headers, move |_| Ok(quantized_mesh::layer_json(&id, &version()).into_bytes())).await
+    cached(state, entry, derived, headers, move |_| {
+        Ok(quantized_mesh::layer_json(&id, &version(), MAX_ZOOM).into_bytes())
+    })
+    .await
 }
 
 /// `GET /v1/planets/{id}/terrain/{z}/{x}/{y}.terrain`.
@@ -74,7 +77,7 @@ pub async fn tile(
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     let mut answer = cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
-        quantized_mesh::terrain_tile(&tiling, z, x, y, ext).map_err(|_| ApiError::internal("tile checked"))
+        quantized_mesh::terrain_tile(&tiling, (z, x, y), ext, MAX_ZOOM).map_err(|_| ApiError::internal("tile checked"))
     })
     .await?;
     answer.headers_mut().append(header::VARY, HeaderValue::from_static("accept"));
