@@ -132,20 +132,21 @@ enum Command {
     Serve(ServeArgs),
     /// Write the planet as a static tile set, the same bytes as `serve` answers: 3D Tiles 1.1
     /// (tileset.json, tiles/{key}.glb, tiles/{key}.json), Cesium quantized-mesh terrain
-    /// (layer.json, {z}/{x}/{y}.terrain with normals, water mask and metadata) or MapLibre
-    /// elevation tiles (tilejson.json, {z}/{x}/{y}.png). The last level written has no children.
+    /// (layer.json, {z}/{x}/{y}.terrain with normals, water mask and metadata), MapLibre
+    /// elevation tiles (tilejson.json, {z}/{x}/{y}.png) or rivers and lakes as vector tiles
+    /// (tilejson.json, {z}/{x}/{y}.mvt). The last level written has no children.
     Tiles {
         #[command(flatten)]
         planet: PlanetArgs,
         /// Output directory.
         #[arg(long, default_value = "tiles")]
         out: PathBuf,
-        /// Levels to write. 3D Tiles: level 0 has 8 tiles; quantized-mesh: 2; terrarium and
-        /// mapbox: 1; each further level four times as many.
+        /// Levels to write. 3D Tiles: level 0 has 8 tiles; quantized-mesh: 2; terrarium, mapbox
+        /// and mvt: 1; each further level four times as many.
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=9))]
         levels: u8,
-        /// 3dtiles, quantized-mesh, terrarium or mapbox (Terrain-RGB elevation tiles).
-        #[arg(long, default_value = "3dtiles", value_parser = ["3dtiles", "quantized-mesh", "terrarium", "mapbox"])]
+        /// 3dtiles, quantized-mesh, terrarium, mapbox (Terrain-RGB elevation tiles) or mvt.
+        #[arg(long, default_value = "3dtiles", value_parser = ["3dtiles", "quantized-mesh", "terrarium", "mapbox", "mvt"])]
         format: String,
     },
     /// Write a DEM of a region as a Cloud-Optimized GeoTIFF (float32, EPSG:4326): band 1 the
@@ -508,6 +509,7 @@ fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8, format: &st
         "quantized-mesh" => tile_sets::write_quantized_mesh(&tiles, out, levels, &name),
         "terrarium" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Terrarium),
         "mapbox" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Mapbox),
+        "mvt" => tile_sets::write_mvt(&tiles, out, levels, &name),
         _ => tiles.write_files(out, levels),
     }
     .map_err(|e| format!("cannot write to {}: {e}", out.display()))?;

@@ -184,6 +184,18 @@ async fn map_upload_builds_and_serves_every_file() {
     assert_eq!(gz.headers()["content-encoding"], "gzip");
     let res = s.client.get(tile_url("1/2/1")).header("if-none-match", plain_tag).send().await.unwrap();
     assert_eq!(res.status().as_u16(), 304);
+    // Rivers as vector tiles: TileJSON with both layers, tiles gzipped on request.
+    let tj: Value = s.get(&format!("/v1/planets/{id}/rivers/tilejson.json")).await.json().await.unwrap();
+    assert_eq!(tj["vector_layers"][0]["id"], "rivers");
+    let url = tj["tiles"][0].as_str().unwrap().to_string();
+    assert!(url.ends_with(&format!("/v1/planets/{id}/rivers/{{z}}/{{x}}/{{y}}.mvt")), "{url}");
+    let res = s.client.get(url.replace("{z}/{x}/{y}", "0/0/0")).send().await.unwrap();
+    assert_eq!(res.status().as_u16(), 200);
+    assert_eq!(res.headers()["content-type"], "application/vnd.mapbox-vector-tile");
+    let size = res.bytes().await.unwrap().len();
+    let res = s.client.get(url.replace("{z}/{x}/{y}", "0/0/0")).header("accept-encoding", "gzip").send().await.unwrap();
+    // Bodies of 256 bytes or less are not worth compressing.
+    assert_eq!(res.headers().get("content-encoding").is_some(), size > 256, "{size} bytes");
     // JSON is compressed when the client accepts it.
     let res = s
         .client

@@ -113,6 +113,8 @@ async fn bad_requests_name_their_problem() {
         (format!("/v1/planets/{id}/terrain/1/0/0.terrain?v=1&v=2"), "duplicate_parameter", "v"),
         (format!("/v1/planets/{id}/terrain/1/0/0.terrain?extensions=watermask"), "unknown_parameter", "extensions"),
         (format!("/v1/planets/{id}/terrain/layer.json?v=1"), "unknown_parameter", "v"),
+        (format!("/v1/planets/{id}/rivers/1/0/0.pbf"), "invalid_tile", "tile"),
+        (format!("/v1/planets/{id}/rivers/1/0/0.mvt?layers=rivers"), "unknown_parameter", "layers"),
         (format!("/v1/planets/{id}/elevation.tif?width=64&width=128"), "duplicate_parameter", "width"),
         (format!("/v1/planets/{id}/tileset.json?v=1"), "unknown_parameter", "v"),
         (format!("/v1/planets/{id}/tiles/0.glb?v=1"), "unknown_parameter", "v"),
@@ -128,6 +130,10 @@ async fn bad_requests_name_their_problem() {
         let res = s.get(&path).await;
         let want = if tile.starts_with("9999") { 422 } else { 404 };
         assert_eq!(res.status().as_u16(), want, "{path}");
+    }
+    for tile in ["15/0/0", "2/4/0", "2/0/4"] {
+        let path = format!("/v1/planets/{id}/rivers/{tile}.mvt");
+        assert_eq!(s.get(&path).await.status().as_u16(), 404, "{path}");
     }
     // Cesium's geographic scheme: 2^(z+1) x 2^z tiles, down to zoom 14.
     for (tile, outside) in [("15/0/0", true), ("1/4/0", true), ("1/0/2", true), ("1/3/1", false), ("300/0/0", true)] {

@@ -126,7 +126,7 @@ async fn every_documented_operation_answers_as_documented() {
             }
         }
     }
-    assert_eq!(operations, 25);
+    assert_eq!(operations, 27);
     s.stop().await;
 }
 

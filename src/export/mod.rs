@@ -18,6 +18,7 @@ pub mod raster;
 pub mod terrain_rgb;
 pub mod tile_sets;
 pub mod tiles;
+pub mod vector_tiles;
 pub mod view;
 pub mod water;
 

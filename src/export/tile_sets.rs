@@ -9,6 +9,8 @@
 //! - `terrarium`: `tilejson.json` and `{z}/{x}/{y}.png`, as `dem/{z}/{x}/{y}.png`; the TileJSON's
 //!   tile URL is relative (`./{z}/{x}/{y}.png`): put an absolute one there if a client needs it.
 //!
+//! - `mvt`: `tilejson.json` and `{z}/{x}/{y}.mvt` (uncompressed), as `rivers/{z}/{x}/{y}.mvt`.
+//!
 //! 3D Tiles are written by [`PlanetTiles::write_files`].
 
 use super::quantized_mesh::{self, Extensions};
@@ -58,6 +60,24 @@ pub fn write_quantized_mesh(tiles: &PlanetTiles, dir: &Path, levels: u8, name: &
         |z, x, y| quantized_mesh::terrain_tile(tiles, (z, x, y), Extensions::ALL, last).expect("inside the scheme"),
     )?;
     std::fs::write(dir.join("layer.json"), quantized_mesh::layer_json(name, env!("CARGO_PKG_VERSION"), last))?;
+    stats.tileset_files = 1;
+    Ok(stats)
+}
+
+/// Rivers and lakes as vector tiles: `dir/tilejson.json` and its tiles, zooms `0..levels`.
+pub fn write_mvt(tiles: &PlanetTiles, dir: &Path, levels: u8, name: &str) -> std::io::Result<WriteStats> {
+    let levels = levels.clamp(1, terrain_rgb::MAX_ZOOM + 1);
+    let lines = tiles.rivers();
+    let mut stats = write_levels(
+        dir,
+        levels,
+        "mvt",
+        |z| (1 << z, 1 << z),
+        |z, x, y| super::vector_tiles::river_tile(lines, z, x, y).expect("inside the scheme"),
+    )?;
+    let mut doc: serde_json::Value = serde_json::from_str(&super::vector_tiles::tilejson(name, ".")).expect("our JSON");
+    doc["maxzoom"] = serde_json::json!(levels - 1);
+    std::fs::write(dir.join("tilejson.json"), serde_json::to_string_pretty(&doc).expect("JSON serialises"))?;
     stats.tileset_files = 1;
     Ok(stats)
 }
@@ -120,6 +140,10 @@ mod tests {
         let tj: serde_json::Value =
             serde_json::from_slice(&std::fs::read(dir.join("dem/tilejson.json")).unwrap()).unwrap();
         assert_eq!((tj["tiles"][0].as_str(), tj["encoding"].as_str()), (Some("./{z}/{x}/{y}.png"), Some("mapbox")));
+        let stats = write_mvt(&tiles, &dir.join("mvt"), 2, "test").unwrap();
+        assert_eq!(stats.tiles, 5);
+        let mvt = std::fs::read(dir.join("mvt/1/1/0.mvt")).unwrap();
+        assert_eq!(mvt, super::super::vector_tiles::river_tile(tiles.rivers(), 1, 1, 0).unwrap());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

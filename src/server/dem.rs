@@ -81,7 +81,7 @@ fn parse_encoding(query: &str) -> Result<Encoding, ApiError> {
 
 /// Where the tiles are, as the client reached this server: `{scheme}://{host}` from the `Host`
 /// (and `X-Forwarded-Proto`) headers when they are plain, else an absolute path.
-fn origin(headers: &HeaderMap) -> String {
+pub(super) fn origin(headers: &HeaderMap) -> String {
     let plain = |s: &str, extra: &str| {
         !s.is_empty() && s.len() <= 255 && s.chars().all(|c| c.is_ascii_alphanumeric() || extra.contains(c))
     };

@@ -18,6 +18,7 @@ pub mod limit;
 pub mod metrics;
 pub mod planets;
 pub mod resources;
+pub mod rivers;
 pub mod snapshot;
 pub mod state;
 pub mod store;
@@ -315,6 +316,7 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
             "application/javascript",
             "text/",
             terrain::CONTENT_TYPE,
+            rivers::CONTENT_TYPE,
         ]
         .iter()
         .any(|t| ct.starts_with(t))
@@ -338,6 +340,8 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .route("/v1/planets/{id}/dem.tif", get(dem::dem))
         .route("/v1/planets/{id}/dem/tilejson.json", get(dem::tilejson))
         .route("/v1/planets/{id}/dem/{z}/{x}/{file}", get(dem::tile))
+        .route("/v1/planets/{id}/rivers/tilejson.json", get(rivers::tilejson))
+        .route("/v1/planets/{id}/rivers/{z}/{x}/{file}", get(rivers::tile))
         .route("/v1/planets/{id}/terrain/layer.json", get(terrain::layer))
         .route("/v1/planets/{id}/terrain/{z}/{x}/{file}", get(terrain::tile))
         .route("/v1/planets/{id}/render.png", get(snapshot::png))

@@ -89,6 +89,8 @@ pub struct PlanetTiles {
     planet_bounds: OnceLock<OrientedBox>,
     /// The base mesh's faces by cell, made by the first DEM.
     faces: OnceLock<crate::export::face_index::FaceIndex>,
+    /// The rivers and lakes as lines for vector tiles, made by the first.
+    rivers: OnceLock<crate::export::vector_tiles::RiverLines>,
     /// Buffers of finished refinements, for the next ones (at most [`MAX_SPARES`]).
     spares: Mutex<Vec<crate::mesh::Mesh>>,
 }
@@ -116,6 +118,7 @@ impl PlanetTiles {
             placements,
             planet_bounds: OnceLock::new(),
             faces: OnceLock::new(),
+            rivers: OnceLock::new(),
             spares: Mutex::new(Vec::new()),
         })
     }
@@ -141,6 +144,11 @@ impl PlanetTiles {
         grids: &[crate::export::dem::DemRequest],
     ) -> Vec<crate::export::dem::Dem> {
         crate::export::dem::sample_grids(self, detail, grids)
+    }
+
+    /// The rivers and lakes, cut into vector tiles by [`crate::export::vector_tiles`].
+    pub fn rivers(&self) -> &crate::export::vector_tiles::RiverLines {
+        self.rivers.get_or_init(|| crate::export::vector_tiles::RiverLines::new(&self.planet))
     }
 
     /// The bisection tree of the base mesh.
@@ -188,6 +196,7 @@ impl PlanetTiles {
         self.tree.bytes()
             + self.placements.lock().expect("placements lock").len() * 256
             + self.faces.get().map_or(0, |f| f.bytes())
+            + self.rivers.get().map_or(0, |r| r.bytes())
             + MAX_SPARES * self.planet.mesh.capacity_bytes() * 5 / 4
     }
 
