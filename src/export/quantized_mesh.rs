@@ -311,6 +311,7 @@ pub fn layer_json(name: &str, version: &str, max_zoom: u8) -> String {
         "minzoom": 0,
         "maxzoom": max_zoom,
         "available": available,
+        "metadataAvailability": METADATA_LEVELS,
         "extensions": ["octvertexnormals", "watermask", "metadata"],
         "attribution": "",
     });
