@@ -80,11 +80,46 @@ fn coordinates(part: &[[f64; 3]]) -> Value {
     Value::Array(coords)
 }
 
-fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64, lake_of: &[u32]) -> Value {
+/// The water's fall over a reach's length.
+pub(crate) fn reach_slope(mesh: &Mesh, reach: &Reach) -> f64 {
     let (first, last) = (reach.vertices[0], *reach.vertices.last().unwrap_or(&reach.vertices[0]));
     let fall = mesh.vertices[first as usize].water - mesh.vertices[last as usize].water;
-    let slope = if reach.length_m > 0.0 { fall / reach.length_m } else { 0.0 };
-    let lake_id = reach.vertices.iter().map(|&v| lake_of.get(v as usize).copied().unwrap_or(NONE)).find(|&l| l != NONE);
+    if reach.length_m > 0.0 {
+        fall / reach.length_m
+    } else {
+        0.0
+    }
+}
+
+/// The first lake a reach flows into or through.
+pub(crate) fn reach_lake(reach: &Reach, lake_of: &[u32]) -> Option<u32> {
+    reach.vertices.iter().map(|&v| lake_of.get(v as usize).copied().unwrap_or(NONE)).find(|&l| l != NONE)
+}
+
+/// A lake's shore rings as `[lon, lat]`, longitudes unwrapped along each ring (so a ring that
+/// crosses ±180° stays one ring, past ±180°).
+pub(crate) fn unwrapped_rings(rings: &[Vec<glam::DVec3>]) -> Vec<Vec<[f64; 2]>> {
+    rings
+        .iter()
+        .map(|ring| {
+            let mut prev: Option<f64> = None;
+            ring.iter()
+                .map(|&p| {
+                    let (lat, mut lon) = lat_lon(p);
+                    if let Some(q) = prev {
+                        lon = q + crate::mesh::raster::wrap180(lon - q);
+                    }
+                    prev = Some(lon);
+                    [lon, lat]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn feature(mesh: &Mesh, reach: &Reach, sea_level: f64, lake_of: &[u32]) -> Value {
+    let slope = reach_slope(mesh, reach);
+    let lake_id = reach_lake(reach, lake_of);
     let points: Vec<[f64; 3]> = reach
         .vertices
         .iter()
@@ -139,23 +174,7 @@ fn contains(ring: &[[f64; 2]], p: [f64; 2]) -> bool {
 }
 
 fn lake_feature(lake: &Lake, rings: &[Vec<glam::DVec3>]) -> Option<Value> {
-    // Longitudes unwrapped along each ring.
-    let flat: Vec<Vec<[f64; 2]>> = rings
-        .iter()
-        .map(|ring| {
-            let mut prev: Option<f64> = None;
-            ring.iter()
-                .map(|&p| {
-                    let (lat, mut lon) = lat_lon(p);
-                    if let Some(q) = prev {
-                        lon = q + crate::mesh::raster::wrap180(lon - q);
-                    }
-                    prev = Some(lon);
-                    [lon, lat]
-                })
-                .collect()
-        })
-        .collect();
+    let flat = unwrapped_rings(rings);
     let outer: Vec<&Vec<[f64; 2]>> = flat.iter().filter(|r| signed_area(r) > 0.0).collect();
     let holes: Vec<&Vec<[f64; 2]>> = flat.iter().filter(|r| signed_area(r) <= 0.0).collect();
     let level = round_to(lake.water_altitude_m, 2);

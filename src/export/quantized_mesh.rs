@@ -172,11 +172,6 @@ fn sample(tiles: &PlanetTiles, b: &GeoBounds, mask: bool) -> (Vec<f64>, Option<W
     (h, mask)
 }
 
-/// Earth-centred position (WGS84, metres) of a point `h` metres above the ellipsoid.
-fn ecef(lon: f64, lat: f64, h: f64) -> [f64; 3] {
-    geodetic_to_ecef(lon, lat, h)
-}
-
 /// The quantized-mesh tile `z/x/y` of the planet, uncompressed; its metadata lists descendants
 /// down to `max_zoom` ([`MAX_ZOOM`] for the server, the last level written for a static export).
 pub fn terrain_tile(
@@ -257,7 +252,7 @@ pub fn terrain_tile(
     if ext.normals {
         let p = |i: i64, j: i64| {
             let v = h[((j + 1) as u32 * n + (i + 1) as u32) as usize];
-            glam::DVec3::from(ecef(lon(i), lat(j), v))
+            glam::DVec3::from(geodetic_to_ecef(lon(i), lat(j), v))
         };
         let normals = order
             .iter()
@@ -265,7 +260,7 @@ pub fn terrain_tile(
                 let (i, j) = (i64::from(g % side), i64::from(g / side));
                 let east = p(i + 1, j) - p(i - 1, j);
                 let north = p(i, j - 1) - p(i, j + 1);
-                let up = glam::DVec3::from(ecef(lon(i), lat(j), 0.0)).normalize();
+                let up = glam::DVec3::from(geodetic_to_ecef(lon(i), lat(j), 0.0)).normalize();
                 let mut nrm = east.cross(north).normalize_or_zero();
                 if nrm == glam::DVec3::ZERO || !nrm.is_finite() {
                     nrm = up;

@@ -100,21 +100,26 @@ pub fn dem_tile_png(tiles: &PlanetTiles, z: u8, x: u32, y: u32, encoding: Encodi
     Ok(super::preview::encode_png(&rgb, TILE_SIZE, TILE_SIZE, image::ExtendedColorType::Rgb8))
 }
 
-/// TileJSON 3.0.0 of the elevation tiles, whose URLs start with `base` (ending before `/{z}`).
-pub fn tilejson(name: &str, base: &str, encoding: Encoding) -> String {
+/// The tile URL template of the server's elevation tiles under `base` (ending before `/{z}`).
+pub fn tile_template(base: &str, encoding: Encoding) -> String {
     let query = match encoding {
-        Encoding::Terrarium => String::new(),
-        Encoding::Mapbox => "?encoding=mapbox".into(),
+        Encoding::Terrarium => "",
+        Encoding::Mapbox => "?encoding=mapbox",
     };
+    format!("{base}/{{z}}/{{x}}/{{y}}.png{query}")
+}
+
+/// TileJSON 3.0.0 of elevation tiles at `tiles` (a URL template), zooms 0 to `max_zoom`.
+pub fn tilejson(name: &str, tiles: &str, encoding: Encoding, max_zoom: u8) -> String {
     let doc = json!({
         "tilejson": "3.0.0",
         "name": format!("{name} elevation"),
         "description": "Ground altitude relative to sea level (the sea floor under the sea), \
                         from the planet refined to each tile's pixel size",
-        "tiles": [format!("{base}/{{z}}/{{x}}/{{y}}.png{query}")],
+        "tiles": [tiles],
         "scheme": "xyz",
         "minzoom": 0,
-        "maxzoom": MAX_ZOOM,
+        "maxzoom": max_zoom.min(MAX_ZOOM),
         "bounds": [-180.0, -MAX_LAT, 180.0, MAX_LAT],
         "center": [0.0, 0.0, 2],
         "tileSize": TILE_SIZE,

@@ -75,9 +75,7 @@ pub fn write_mvt(tiles: &PlanetTiles, dir: &Path, levels: u8, name: &str) -> std
         |z| (1 << z, 1 << z),
         |z, x, y| super::vector_tiles::river_tile(lines, z, x, y).expect("inside the scheme"),
     )?;
-    let mut doc: serde_json::Value = serde_json::from_str(&super::vector_tiles::tilejson(name, ".")).expect("our JSON");
-    doc["maxzoom"] = serde_json::json!(levels - 1);
-    std::fs::write(dir.join("tilejson.json"), serde_json::to_string_pretty(&doc).expect("JSON serialises"))?;
+    std::fs::write(dir.join("tilejson.json"), super::vector_tiles::tilejson(name, ".", levels - 1))?;
     stats.tileset_files = 1;
     Ok(stats)
 }
@@ -98,12 +96,9 @@ pub fn write_terrarium(
         |z| (1 << z, 1 << z),
         |z, x, y| terrain_rgb::dem_tile_png(tiles, z, x, y, encoding).expect("inside the scheme"),
     )?;
-    let json = terrain_rgb::tilejson(name, ".", encoding);
     // A static host serves no query: the file names carry no encoding.
-    let json = json.replace(".png?encoding=mapbox", ".png");
-    let mut doc: serde_json::Value = serde_json::from_str(&json).expect("our JSON");
-    doc["maxzoom"] = serde_json::json!(levels - 1);
-    std::fs::write(dir.join("tilejson.json"), serde_json::to_string_pretty(&doc).expect("JSON serialises"))?;
+    let json = terrain_rgb::tilejson(name, "./{z}/{x}/{y}.png", encoding, levels - 1);
+    std::fs::write(dir.join("tilejson.json"), json)?;
     stats.tileset_files = 1;
     Ok(stats)
 }

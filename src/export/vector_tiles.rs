@@ -16,7 +16,7 @@
 //! counter-clockwise, as the spec asks. Reaches crossing ±180° are cut there as in GeoJSON.
 //! The encoder is the `mvt` crate.
 
-use super::geojson::split_antimeridian;
+use super::geojson::{reach_lake, reach_slope, split_antimeridian, unwrapped_rings};
 use super::terrain_rgb::{tile_bounds, TileError, MAX_LAT, MAX_ZOOM};
 use crate::build::lakes::outlines;
 use crate::build::Planet;
@@ -88,13 +88,6 @@ impl RiverLines {
                     .collect();
                 let parts: Vec<Vec<[f64; 2]>> =
                     split_antimeridian(&pts).into_iter().map(|p| p.iter().map(|q| [q[0], q[1]]).collect()).collect();
-                let (first, last) = (r.vertices[0], *r.vertices.last().unwrap_or(&r.vertices[0]));
-                let fall = mesh.vertices[first as usize].water - mesh.vertices[last as usize].water;
-                let lake_id = r
-                    .vertices
-                    .iter()
-                    .map(|&v| planet.lake_of.get(v as usize).copied().unwrap_or(crate::mesh::NONE))
-                    .find(|&l| l != crate::mesh::NONE);
                 Line {
                     bounds: bounds_of(parts.iter().flatten()),
                     parts,
@@ -106,9 +99,9 @@ impl RiverLines {
                     discharge_m3s: r.discharge_m3s,
                     width_m: r.width_m(),
                     depth_m: r.depth_m(),
-                    slope: if r.length_m > 0.0 { fall / r.length_m } else { 0.0 },
+                    slope: reach_slope(mesh, r),
                     perennial: r.perennial(),
-                    lake_id,
+                    lake_id: reach_lake(r, &planet.lake_of),
                 }
             })
             .collect();
@@ -117,22 +110,7 @@ impl RiverLines {
             .lakes
             .iter()
             .map(|l| {
-                let rings: Vec<Vec<[f64; 2]>> = shores[l.id as usize]
-                    .iter()
-                    .map(|ring| {
-                        let mut prev: Option<f64> = None;
-                        ring.iter()
-                            .map(|&p| {
-                                let (lat, mut lon) = lat_lon(p);
-                                if let Some(q) = prev {
-                                    lon = q + crate::mesh::raster::wrap180(lon - q);
-                                }
-                                prev = Some(lon);
-                                [lon, lat]
-                            })
-                            .collect()
-                    })
-                    .collect();
+                let rings = unwrapped_rings(&shores[l.id as usize]);
                 LakeShape {
                     bounds: bounds_of(rings.iter().flatten()),
                     rings,
@@ -377,8 +355,10 @@ fn inside(ring: &[[f64; 2]], p: [f64; 2]) -> bool {
     c
 }
 
-/// TileJSON 3.0.0 of the river tiles, whose URLs start with `base` (ending before `/{z}`).
-pub fn tilejson(name: &str, base: &str) -> String {
+/// TileJSON 3.0.0 of the river tiles, whose URLs start with `base` (ending before `/{z}`),
+/// zooms 0 to `max_zoom`.
+pub fn tilejson(name: &str, base: &str, max_zoom: u8) -> String {
+    let max_zoom = max_zoom.min(MAX_ZOOM);
     let doc = json!({
         "tilejson": "3.0.0",
         "name": format!("{name} rivers"),
@@ -386,7 +366,7 @@ pub fn tilejson(name: &str, base: &str) -> String {
         "tiles": [format!("{base}/{{z}}/{{x}}/{{y}}.mvt")],
         "scheme": "xyz",
         "minzoom": 0,
-        "maxzoom": MAX_ZOOM,
+        "maxzoom": max_zoom,
         "bounds": [-180.0, -MAX_LAT, 180.0, MAX_LAT],
         "center": [0.0, 0.0, 2],
         "vector_layers": [
@@ -394,7 +374,7 @@ pub fn tilejson(name: &str, base: &str) -> String {
                 "id": "rivers",
                 "description": "One LineString per reach, ordered downstream; order s from zoom 9 - s",
                 "minzoom": 0,
-                "maxzoom": MAX_ZOOM,
+                "maxzoom": max_zoom,
                 "fields": {
                     "id": "Number", "downstream_id": "Number (absent at a mouth)", "strahler": "Number",
                     "upstream_area_km2": "Number", "length_km": "Number", "discharge_m3s": "Number",
@@ -406,7 +386,7 @@ pub fn tilejson(name: &str, base: &str) -> String {
                 "id": "lakes",
                 "description": "One Polygon per lake",
                 "minzoom": 0,
-                "maxzoom": MAX_ZOOM,
+                "maxzoom": max_zoom,
                 "fields": {
                     "lake_id": "Number", "water_altitude_m": "Number", "area_km2": "Number", "endorheic": "Boolean",
                 },

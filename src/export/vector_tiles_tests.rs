@@ -211,7 +211,8 @@ fn lines_and_rings_are_clipped_to_the_buffered_tile() {
 
 #[test]
 fn tilejson_names_both_layers() {
-    let doc: serde_json::Value = serde_json::from_str(&tilejson("earth", "http://h/v1/planets/earth/rivers")).unwrap();
+    let doc: serde_json::Value =
+        serde_json::from_str(&tilejson("earth", "http://h/v1/planets/earth/rivers", MAX_ZOOM)).unwrap();
     assert_eq!(doc["tiles"][0], "http://h/v1/planets/earth/rivers/{z}/{x}/{y}.mvt");
     let ids: Vec<&str> = doc["vector_layers"].as_array().unwrap().iter().map(|l| l["id"].as_str().unwrap()).collect();
     assert_eq!(ids, ["rivers", "lakes"]);

@@ -111,7 +111,10 @@ pub async fn tilejson(
         content_type: "application/json",
         cost: cost(1 << 20, None, false),
     };
-    cached(state, entry, derived, headers, move |_| Ok(terrain_rgb::tilejson(&id, &base, encoding).into_bytes())).await
+    cached(state, entry, derived, headers, move |_| {
+        Ok(terrain_rgb::tilejson(&id, &terrain_rgb::tile_template(&base, encoding), encoding, MAX_ZOOM).into_bytes())
+    })
+    .await
 }
 
 /// `GET /v1/planets/{id}/dem/{z}/{x}/{y}.png[?encoding=mapbox]`.

@@ -33,7 +33,7 @@ pub async fn tilejson(
         content_type: "application/json",
         cost: cost(1 << 20, None, false),
     };
-    cached(state, entry, derived, headers, move |_| Ok(vector_tiles::tilejson(&id, &base).into_bytes())).await
+    cached(state, entry, derived, headers, move |_| Ok(vector_tiles::tilejson(&id, &base, MAX_ZOOM).into_bytes())).await
 }
 
 /// `GET /v1/planets/{id}/rivers/{z}/{x}/{y}.mvt`.
