@@ -97,6 +97,10 @@ enum Command {
         /// Print adaption statistics as JSON.
         #[arg(long)]
         stats: bool,
+        /// meshopt (quantized attributes, KHR_mesh_quantization, in EXT_meshopt_compression
+        /// streams; about a quarter of the bytes) or none (f32 attributes, no extension).
+        #[arg(long, default_value = "meshopt", value_parser = parse_compression)]
+        compression: riverworld::export::glb::Compression,
         /// Where adaption runs: cpu (rayon), gpu (wgpu compute: every stage, the mesh kept on
         /// the device) or auto (the GPU when the adapter is a real GPU with f64 in shaders whose
         /// meshes are the CPU's bit for bit, checked on a small planet; else the CPU). The choice
@@ -148,6 +152,10 @@ enum Command {
         /// 3dtiles, quantized-mesh, terrarium, mapbox (Terrain-RGB elevation tiles) or mvt.
         #[arg(long, default_value = "3dtiles", value_parser = ["3dtiles", "quantized-mesh", "terrarium", "mapbox", "mvt"])]
         format: String,
+        /// 3D Tiles contents: meshopt (quantized, EXT_meshopt_compression) or none (f32, no
+        /// extension; the server's `?compression=none`).
+        #[arg(long, default_value = "meshopt", value_parser = parse_compression)]
+        compression: riverworld::export::glb::Compression,
     },
     /// Write a DEM of a region as a Cloud-Optimized GeoTIFF (float32, EPSG:4326): band 1 the
     /// ground and band 2 the water surface (NaN where dry), metres relative to sea level, at
@@ -328,6 +336,10 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
     })
 }
 
+fn parse_compression(s: &str) -> Result<riverworld::export::glb::Compression, String> {
+    riverworld::export::glb::Compression::parse(s).ok_or_else(|| format!("{s:?}: expected meshopt or none"))
+}
+
 fn parse_backend(s: &str) -> Result<riverworld::adapt::gpu::Backend, String> {
     s.parse()
 }
@@ -413,6 +425,7 @@ fn run_view(
     max_faces: Option<usize>,
     out: &std::path::Path,
     stats: bool,
+    compression: riverworld::export::glb::Compression,
     backend: riverworld::adapt::gpu::Backend,
 ) -> Result<(), String> {
     let file_name = out_file_name(out)?;
@@ -440,7 +453,7 @@ fn run_view(
     }
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
-    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin)
+    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin, compression)
         .map_err(|e| format!("--max-faces: {e}: ask for fewer faces"))?;
     generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])
         .map_err(|e| e.to_string())?;
@@ -497,7 +510,13 @@ fn out_file_name(out: &std::path::Path) -> Result<&str, String> {
     }
 }
 
-fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8, format: &str) -> Result<(), String> {
+fn run_tiles(
+    planet: &PlanetArgs,
+    out: &std::path::Path,
+    levels: u8,
+    format: &str,
+    compression: riverworld::export::glb::Compression,
+) -> Result<(), String> {
     use riverworld::export::{terrain_rgb::Encoding, tile_sets};
     let spec = planet.spec().map_err(|e| e.to_string())?;
     let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
@@ -510,7 +529,7 @@ fn run_tiles(planet: &PlanetArgs, out: &std::path::Path, levels: u8, format: &st
         "terrarium" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Terrarium),
         "mapbox" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Mapbox),
         "mvt" => tile_sets::write_mvt(&tiles, out, levels, &name),
-        _ => tiles.write_files(out, levels),
+        _ => tiles.write_files(out, levels, compression),
     }
     .map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
     println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
@@ -578,8 +597,8 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::View { planet, cameras, max_faces, out, stats, backend } => {
-            match run_view(&planet, &cameras, max_faces.map(|n| n as usize), &out, stats, backend) {
+        Command::View { planet, cameras, max_faces, out, stats, compression, backend } => {
+            match run_view(&planet, &cameras, max_faces.map(|n| n as usize), &out, stats, compression, backend) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -587,13 +606,15 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::Tiles { planet, out, levels, format } => match run_tiles(&planet, &out, levels, &format) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(2)
+        Command::Tiles { planet, out, levels, format, compression } => {
+            match run_tiles(&planet, &out, levels, &format, compression) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(2)
+                }
             }
-        },
+        }
         Command::Dem { planet, bbox, width, height, out } => run_dem(&planet, &bbox, width, height, &out),
         Command::Serve(args) => match run_serve(args) {
             Ok(()) => ExitCode::SUCCESS,

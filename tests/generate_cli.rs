@@ -252,12 +252,33 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
         "--stats",
         "--backend",
         "cpu",
+        "--compression",
+        "none",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let via_stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(via_stats["faces"], stats["faces"]);
-    // (The file lists the vertices and triangles in the order the mesh holds them.)
-    assert_eq!(glb_triangles(&bytes), glb_triangles(&std::fs::read(&via).unwrap()), "the mesh depends on the path");
+    // (A plain file lists the vertices and triangles in the order the mesh holds them.)
+    let plain = dir.join("plain.glb");
+    let o = run(&[
+        "view",
+        "--faces",
+        "2000",
+        "--camera",
+        cam,
+        "--max-faces",
+        "100000",
+        "--out",
+        plain.to_str().unwrap(),
+        "--backend",
+        "cpu",
+        "--compression",
+        "none",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let plain = std::fs::read(&plain).unwrap();
+    assert!(plain.len() > 2 * bytes.len(), "compressed by default: {} of {} bytes", bytes.len(), plain.len());
+    assert_eq!(glb_triangles(&plain), glb_triangles(&std::fs::read(&via).unwrap()), "the mesh depends on the path");
     // The wgpu compute backend (lavapipe in CI) writes the same bytes.
     let o = run_view(&g, "gpu");
     let log = String::from_utf8_lossy(&o.stderr);

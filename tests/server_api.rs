@@ -80,6 +80,22 @@ async fn map_upload_builds_and_serves_every_file() {
     let res = s.get(&format!("/v1/planets/{id}/view.glb?{reordered}")).await;
     assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
     assert_eq!(res.bytes().await.unwrap(), glb);
+    // Compressed by default (EXT_meshopt_compression, required); `compression=none` gives the
+    // plain file, larger, under its own tag; `compression=meshopt` is the default's.
+    let required = |b: &[u8]| -> Value {
+        let len = u32::from_le_bytes(b[12..16].try_into().unwrap()) as usize;
+        serde_json::from_slice::<Value>(&b[20..20 + len]).unwrap()["extensionsRequired"].clone()
+    };
+    assert!(required(&glb).as_array().unwrap().iter().any(|e| e == "EXT_meshopt_compression"));
+    let res = s.get(&format!("/v1/planets/{id}/view.glb?{CAMERA}&compression=none")).await;
+    assert_ne!(res.headers()["etag"].to_str().unwrap(), etag);
+    let plain = res.bytes().await.unwrap();
+    assert!(required(&plain).is_null() && plain.len() > 2 * glb.len(), "{} vs {}", plain.len(), glb.len());
+    let res = s.get(&format!("/v1/planets/{id}/view.glb?{CAMERA}&compression=meshopt")).await;
+    assert_eq!(res.headers()["etag"].to_str().unwrap(), etag);
+    let res = s.get(&format!("/v1/planets/{id}/view.glb?{CAMERA}&compression=gzip")).await;
+    assert_eq!(res.status().as_u16(), 422);
+    assert!(res.text().await.unwrap().contains("neither meshopt nor none"));
 
     let res = s.get(&format!("/v1/planets/{id}/rivers.geojson")).await;
     assert_eq!(res.status().as_u16(), 200);

@@ -5,6 +5,7 @@
 mod server_common;
 
 use riverworld::build::{build_planet, PlanetSpec};
+use riverworld::export::glb::Compression;
 use riverworld::export::tiles::{PlanetTiles, TileKey};
 use riverworld::params::Params;
 use serde_json::Value;
@@ -76,7 +77,27 @@ async fn tilesets_and_tiles_are_served_and_resolve() {
     let tiles = PlanetTiles::new(planet, spec.params.clone()).unwrap();
     let key = TileKey::root(2).child(3).child(1);
     let served = s.get(&format!("{base}/tiles/231.glb")).await.bytes().await.unwrap();
-    assert_eq!(served.as_ref(), tiles.content(key).glb.as_slice());
+    assert_eq!(served.as_ref(), tiles.content(key, Compression::Meshopt).glb.as_slice());
+
+    // `compression=none`: plain contents, and tileset files whose URIs keep asking for them
+    // (a client that also carries the tileset's query to them asks twice, alike: fine).
+    let plain: Value = s.get(&format!("{base}/tileset.json?compression=none")).await.json().await.unwrap();
+    let mut plain_uris = Vec::new();
+    uris(&plain["root"], &mut plain_uris);
+    assert_eq!(plain_uris.len(), top_uris.len());
+    for (p, u) in plain_uris.iter().zip(&top_uris) {
+        assert_eq!(p, &format!("{u}?compression=none"));
+    }
+    let sub: Value = s.get(&format!("{base}/tiles/23.json?compression=none")).await.json().await.unwrap();
+    assert!(sub["root"]["content"]["uri"].as_str().unwrap().ends_with(".glb?compression=none"));
+    for query in ["compression=none", "compression=none&compression=none"] {
+        let res = s.get(&format!("{base}/tiles/231.glb?{query}")).await;
+        assert_eq!(res.status(), 200);
+        assert_ne!(res.headers()["etag"].to_str().unwrap(), tag, "another answer, another tag");
+        assert_eq!(res.bytes().await.unwrap().as_ref(), tiles.content(key, Compression::None).glb.as_slice());
+    }
+    let explicit = s.get(&format!("{base}/tiles/231.glb?compression=meshopt")).await.bytes().await.unwrap();
+    assert_eq!(explicit, served);
     s.stop().await;
 }
 
@@ -94,6 +115,17 @@ async fn bad_tile_names_answer_json_errors() {
     expect_error(s.get(&format!("{base}/0.json")).await, 404, "not_found").await;
     expect_error(s.get("/v1/planets/ffffffffffffffff/tiles/0.glb").await, 404, "not_found").await;
     expect_error(s.get("/v1/planets/ffffffffffffffff/tileset.json").await, 404, "not_found").await;
+    // The one query parameter, with a value it knows, once (or repeated alike).
+    for (query, code, field) in [
+        ("compression=draco", "invalid_parameter", "compression"),
+        ("compression=none&compression=meshopt", "duplicate_parameter", "compression"),
+        ("level=3", "unknown_parameter", "level"),
+    ] {
+        for path in [format!("{base}/0.glb?{query}"), format!("/v1/planets/{id}/tileset.json?{query}")] {
+            let err = expect_error(s.get(&path).await, 422, code).await;
+            assert_eq!(err["field"], field, "{path}");
+        }
+    }
     // Paths with more segments are no route.
     expect_error(s.get(&format!("{base}/0/1.glb")).await, 404, "not_found").await;
     s.stop().await;

@@ -4,7 +4,10 @@
 //  - MapLibre GL JS: a `raster-dem` source from dem/tilejson.json as 3D terrain and hillshade, and
 //    the `rivers` and `lakes` layers of rivers/tilejson.json over it;
 //  - CesiumJS: `CesiumTerrainProvider.fromUrl(terrain/layer.json)` asking for vertex normals and
-//    the water mask.
+//    the water mask;
+//  - CesiumJS: `Cesium3DTileset.fromUrl(tileset.json)`, whose contents are quantized and
+//    meshopt-compressed glTF, from a camera low enough for tiles of level 8 (quantized
+//    positions).
 // Each must request tiles of its kinds from the server, draw a canvas that is not blank, and log
 // no errors; nothing may be fetched from outside the two local servers.
 //
@@ -45,6 +48,21 @@ const port = 18300 + Math.floor(Math.random() * 500);
 const api = `http://127.0.0.1:${port}`;
 const planet = `${api}/v1/planets/earth`;
 
+// Options of both Cesium viewers: no widgets, no sky, a canvas that can be read back.
+const cesiumQuiet = `geocoder: false, animation: false, timeline: false, homeButton: false,
+  sceneModePicker: false, navigationHelpButton: false, fullscreenButton: false, infoBox: false,
+  selectionIndicator: false, skyBox: false, skyAtmosphere: false, requestRenderMode: false,
+  contextOptions: { webgl: { preserveDrawingBuffer: true } }`;
+
+// The start of both Cesium pages: the library, a 800 x 600 container, an error list.
+const cesiumHead = `<!doctype html><html><head><meta charset="utf-8">
+<script>window.CESIUM_BASE_URL = '/node_modules/cesium/Build/Cesium/';</script>
+<link rel="stylesheet" href="/node_modules/cesium/Build/Cesium/Widgets/widgets.css">
+<style>html,body,#c{margin:0;width:800px;height:600px}</style></head><body><div id="c"></div>
+<script src="/node_modules/cesium/Build/Cesium/Cesium.js"></script><script>
+window.errors = [];
+`;
+
 const pages = {
   '/maplibre.html': `<!doctype html><html><head><meta charset="utf-8">
 <link rel="stylesheet" href="/node_modules/maplibre-gl/dist/maplibre-gl.css">
@@ -68,22 +86,13 @@ const map = new maplibregl.Map({
 map.on('error', (e) => window.errors.push(String(e.error && e.error.message || e)));
 map.on('idle', () => { window.idle = true; });
 </script></body></html>`,
-  '/cesium.html': `<!doctype html><html><head><meta charset="utf-8">
-<script>window.CESIUM_BASE_URL = '/node_modules/cesium/Build/Cesium/';</script>
-<link rel="stylesheet" href="/node_modules/cesium/Build/Cesium/Widgets/widgets.css">
-<style>html,body,#c{margin:0;width:800px;height:600px}</style></head><body><div id="c"></div>
-<script src="/node_modules/cesium/Build/Cesium/Cesium.js"></script><script>
-window.errors = [];
-(async () => {
+  '/cesium.html': `${cesiumHead}(async () => {
   try {
     const terrainProvider = await Cesium.CesiumTerrainProvider.fromUrl('${planet}/terrain',
       { requestVertexNormals: true, requestWaterMask: true });
     terrainProvider.errorEvent.addEventListener((e) => window.errors.push('terrain: ' + e.message));
     const viewer = new Cesium.Viewer('c', { terrainProvider, baseLayer: false, baseLayerPicker: false,
-      geocoder: false, animation: false, timeline: false, homeButton: false, sceneModePicker: false,
-      navigationHelpButton: false, fullscreenButton: false, infoBox: false, selectionIndicator: false,
-      skyBox: false, skyAtmosphere: false, requestRenderMode: false,
-      contextOptions: { webgl: { preserveDrawingBuffer: true } } });
+      ${cesiumQuiet} });
     viewer.scene.globe.baseColor = Cesium.Color.fromCssColorString('#b8a888');
     // Midday over the Himalaya, so that the normals' shading shows the relief.
     viewer.clock.shouldAnimate = false;
@@ -95,6 +104,27 @@ window.errors = [];
     window.viewer = viewer;
     window.hasNormals = () => terrainProvider.hasVertexNormals;
     window.hasWaterMask = () => terrainProvider.hasWaterMask;
+  } catch (e) {
+    window.errors.push(String(e && e.message || e));
+  }
+})();
+</script></body></html>`,
+  '/tiles3d.html': `${cesiumHead}window.loads = 0;
+(async () => {
+  try {
+    const viewer = new Cesium.Viewer('c', { globe: false, baseLayer: false, baseLayerPicker: false,
+      ${cesiumQuiet} });
+    viewer.clock.shouldAnimate = false;
+    viewer.clock.currentTime = Cesium.JulianDate.fromIso8601('2026-03-20T06:00:00Z');
+    const tileset = await Cesium.Cesium3DTileset.fromUrl('${planet}/tileset.json');
+    tileset.tileFailed.addEventListener((e) => window.errors.push('tile: ' + e.url + ': ' + e.message));
+    tileset.tileLoad.addEventListener(() => { window.loads += 1; });
+    viewer.scene.primitives.add(tileset);
+    // 20 km over the southern Himalaya, looking north: level 8 and finer near the camera.
+    viewer.camera.setView({ destination: Cesium.Cartesian3.fromDegrees(86.9, 27.2, 20000),
+      orientation: { heading: 0, pitch: Cesium.Math.toRadians(-35), roll: 0 } });
+    window.viewer = viewer;
+    window.tileset = tileset;
   } catch (e) {
     window.errors.push(String(e && e.message || e));
   }
@@ -232,6 +262,32 @@ try {
   await cs.check();
   if (csSpread.colours < 20) fail(`cesium: the canvas is nearly blank ${JSON.stringify(csSpread)}`);
   console.log(`cesium after ${seconds()} s: ${JSON.stringify(cs.seen)}, canvas ${JSON.stringify(csSpread)}`);
+  await cs.page.close();
+
+  // CesiumJS: the 3D Tiles, down to tiles whose positions are quantized.
+  const t3 = await open('tiles3d', ['/tileset.json', '.glb']);
+  let deepest = 0;
+  t3.page.on('response', (r) => {
+    const m = /\/tiles\/([0-7][0-3]*)\.glb$/.exec(new URL(r.url()).pathname);
+    if (m && r.status() === 200) deepest = Math.max(deepest, m[1].length - 1);
+  });
+  await waitFor('Cesium to load 3D Tiles down to level 8', 300, async () => {
+    await t3.check();
+    const state = await t3.page.evaluate(() => ({
+      errors: window.errors,
+      loaded: !!window.tileset && window.tileset.tilesLoaded,
+    }));
+    if (state.errors.length) fail(`cesium 3D Tiles: ${state.errors.join('\n')}`);
+    return deepest >= 8 && state.loaded;
+  });
+  const loads = await t3.page.evaluate(() => window.loads);
+  const t3Spread = await t3.spread();
+  if (shots) await t3.page.screenshot({ path: join(shots, 'cesium-3dtiles.png') });
+  await t3.check();
+  if (loads < t3.seen['.glb']) fail(`cesium 3D Tiles: ${t3.seen['.glb']} contents fetched, ${loads} loaded`);
+  if (t3Spread.colours < 20) fail(`cesium 3D Tiles: the canvas is nearly blank ${JSON.stringify(t3Spread)}`);
+  console.log(`cesium 3D Tiles after ${seconds()} s: ${JSON.stringify(t3.seen)}, deepest level ${deepest}, ` +
+    `canvas ${JSON.stringify(t3Spread)}`);
   console.log(`GIS clients passed in ${seconds()} s`);
 } finally {
   if (browser) await browser.close();

@@ -7,9 +7,12 @@
 //! Y-up to Z-up rotation 3D Tiles applies to glTF content. Units stay metres, planet-centred.
 //!
 //! [`encode_glb`] writes any number of [`GlbMesh`]es (one mesh, one primitive and one node each,
-//! all in the default scene); [`planet_glb`] uses it for the base mesh.
+//! all in the default scene), plain or quantized and meshopt-compressed ([`Compression`],
+//! `glb_pack.rs`); [`planet_glb`] uses it for the base mesh.
 
 use super::climate::{climate_colour, water_colour};
+pub use super::glb_pack::Compression;
+use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, reorder, StreamKind};
 use super::surface_normals;
 use crate::build::continents::lat_lon;
 use crate::mesh::{Mesh, VertexFlags};
@@ -63,7 +66,7 @@ const RIVER_RGB: [u8; 3] = [40, 90, 185];
 /// The planet's base mesh as a `.glb`: one mesh, one primitive, POSITION / NORMAL / COLOR_0 and
 /// u32 indices, coloured by vertex type and altitude with the climate lookup.
 pub fn planet_glb(mesh: &Mesh, params: &Params) -> Result<Vec<u8>, GlbTooLarge> {
-    encode_glb(&[planet_mesh(mesh, params)])
+    encode_glb(&[planet_mesh(mesh, params)], Compression::None)
 }
 
 /// The base mesh as a [`GlbMesh`] (glTF axes, no translation).
@@ -129,6 +132,10 @@ pub fn terrain_mesh_with_normals(
 enum ViewData<'a> {
     Vec3(&'a [[f32; 3]]),
     Rgba(&'a [[u8; 4]]),
+    /// Quantized positions (x, y, z, pad).
+    Short4(Vec<[i16; 4]>),
+    /// Quantized normals (x, y, z, pad).
+    Byte4(Vec<[i8; 4]>),
     /// Indices written as u16 (all below 65535).
     U16(&'a [u32]),
     U32(&'a [u32]),
@@ -139,8 +146,21 @@ impl ViewData<'_> {
         match self {
             ViewData::Vec3(v) => v.len() * 12,
             ViewData::Rgba(c) => c.len() * 4,
+            ViewData::Short4(v) => v.len() * 8,
+            ViewData::Byte4(v) => v.len() * 4,
             ViewData::U16(i) => i.len() * 2,
             ViewData::U32(i) => i.len() * 4,
+        }
+    }
+
+    /// Its meshopt stream's kind; `vertices` is the count its indices stay below.
+    fn stream_kind(&self, vertices: usize) -> StreamKind {
+        match self {
+            ViewData::Vec3(_) => StreamKind::Attributes { stride: 12 },
+            ViewData::Rgba(_) | ViewData::Byte4(_) => StreamKind::Attributes { stride: 4 },
+            ViewData::Short4(_) => StreamKind::Attributes { stride: 8 },
+            ViewData::U16(_) => StreamKind::Triangles { stride: 2, vertices },
+            ViewData::U32(_) => StreamKind::Triangles { stride: 4, vertices },
         }
     }
 
@@ -151,6 +171,8 @@ impl ViewData<'_> {
             ViewData::Vec3(v) if little => out.extend_from_slice(bytemuck::cast_slice(v)),
             ViewData::Vec3(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
             ViewData::Rgba(c) => out.extend_from_slice(bytemuck::cast_slice(c)),
+            ViewData::Short4(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
+            ViewData::Byte4(v) => out.extend(v.iter().flatten().map(|&x| x as u8)),
             ViewData::U16(i) => i.iter().for_each(|&i| out.extend_from_slice(&(i as u16).to_le_bytes())),
             ViewData::U32(i) if little => out.extend_from_slice(bytemuck::cast_slice(i)),
             ViewData::U32(i) => i.iter().for_each(|i| out.extend_from_slice(&i.to_le_bytes())),
@@ -159,27 +181,40 @@ impl ViewData<'_> {
     }
 }
 
-/// Adds a buffer view for `data` at the end of the binary chunk (`views`, whose padded length is
-/// `bin_len`).
-fn push_view<'a>(
-    root: &mut json::Root,
-    views: &mut Vec<ViewData<'a>>,
-    bin_len: &mut usize,
-    data: ViewData<'a>,
-    target: json::buffer::Target,
-) -> json::Index<json::buffer::View> {
-    let (offset, len) = (*bin_len, data.byte_len());
-    *bin_len += len.next_multiple_of(4);
-    views.push(data);
-    root.push(json::buffer::View {
-        buffer: json::Index::new(0),
-        byte_length: USize64::from(len),
-        byte_offset: Some(USize64::from(offset)),
-        byte_stride: None,
-        target: Some(Valid(target)),
-        extensions: None,
-        extras: Default::default(),
-    })
+/// The buffer views of the binary chunk, in order, and its padded length.
+#[derive(Default)]
+struct Layout<'a> {
+    views: Vec<ViewData<'a>>,
+    kinds: Vec<StreamKind>,
+    bin_len: usize,
+}
+
+impl<'a> Layout<'a> {
+    /// Adds a buffer view for `data` (attributes or indices of a mesh of `vertices`) at the end
+    /// of the binary chunk; with `stride`, the view declares its byte stride.
+    fn push(
+        &mut self,
+        root: &mut json::Root,
+        data: ViewData<'a>,
+        vertices: usize,
+        target: json::buffer::Target,
+        stride: bool,
+    ) -> json::Index<json::buffer::View> {
+        let (offset, len) = (self.bin_len, data.byte_len());
+        let kind = data.stream_kind(vertices);
+        self.bin_len += len.next_multiple_of(4);
+        self.views.push(data);
+        self.kinds.push(kind);
+        root.push(json::buffer::View {
+            buffer: json::Index::new(0),
+            byte_length: USize64::from(len),
+            byte_offset: Some(USize64::from(offset)),
+            byte_stride: stride.then_some(json::buffer::Stride(kind.stride())),
+            target: Some(Valid(target)),
+            extensions: None,
+            extras: Default::default(),
+        })
+    }
 }
 
 fn accessor(
@@ -223,11 +258,12 @@ fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
 }
 
 /// Encodes meshes as one `.glb`: one glTF mesh (one TRIANGLES primitive), one node and one set of
-/// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene. Meshes
-/// without positions or indices are left out (no meshes at all: no scene, no buffer). Panics if
-/// `normals` or `colors` is neither empty nor as long as `positions`, or if an index is out of
-/// range; refuses meshes that would not fit the container ([`GlbTooLarge`]) before writing.
-pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
+/// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene, stored
+/// as `compression` says (`glb_pack.rs`). Meshes without positions or indices are left out (no
+/// meshes at all: no scene, no buffer). Panics if `normals` or `colors` is neither empty nor as
+/// long as `positions`, or if an index is out of range; refuses meshes that would not fit the
+/// container ([`GlbTooLarge`]) before writing.
+pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8>, GlbTooLarge> {
     use json::buffer::Target::{ArrayBuffer, ElementArrayBuffer};
     let mut root = json::Root {
         asset: json::Asset {
@@ -237,37 +273,63 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
         },
         ..Default::default()
     };
-    // The binary chunk is laid out first and written last, straight into the output.
-    let mut views = Vec::new();
-    let mut bin_len = 0;
-    let mut materials: [Option<json::Index<json::Material>>; 2] = [None, None];
-    let mut nodes = Vec::new();
-    let mut translations = Vec::new();
-    for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
+    for m in meshes {
         let n = m.positions.len();
         assert!(m.normals.is_empty() || m.normals.len() == n, "normals must match positions");
         assert!(m.colors.is_empty() || m.colors.len() == n, "colors must match positions");
         assert!(m.indices.iter().all(|&i| (i as usize) < n), "index out of range");
-        let mut lo = [f32::INFINITY; 3];
-        let mut hi = [f32::NEG_INFINITY; 3];
-        for p in &m.positions {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        let bounds = (serde_json::json!(lo.map(f64::from)), serde_json::json!(hi.map(f64::from)));
+    }
+    let packed = compression == Compression::Meshopt;
+    let reordered: Vec<GlbMesh>;
+    let meshes = if packed {
+        reordered = meshes.iter().map(|m| if m.indices.is_empty() { GlbMesh::default() } else { reorder(m) }).collect();
+        &reordered[..]
+    } else {
+        meshes
+    };
+    // The binary chunk is laid out first and written last, straight into the output.
+    let mut layout = Layout::default();
+    let mut materials: [Option<json::Index<json::Material>>; 2] = [None, None];
+    let mut nodes = Vec::new();
+    // Each node's translation (f64) and uniform scale (quantized positions).
+    let mut transforms: Vec<(Option<[f64; 3]>, Option<f64>)> = Vec::new();
+    let mut quantized_any = false;
+    for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
+        let n = m.positions.len();
         let mut attributes = BTreeMap::new();
-        let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Vec3(&m.positions), ArrayBuffer);
-        let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, Some(bounds)));
-        attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
+        let quantized = if packed { quantize_positions(&m.positions, &m.indices) } else { None };
+        let (position, transform) = match quantized {
+            Some(q) => {
+                let (lo, hi) = extent(q.values.iter().map(|v| [v[0], v[1], v[2]]), i16::MAX, i16::MIN);
+                let bounds = (serde_json::json!(lo), serde_json::json!(hi));
+                let base = m.translation.unwrap_or([0.0; 3]);
+                let translation = std::array::from_fn(|k| base[k] + q.centre[k]);
+                let view = layout.push(&mut root, ViewData::Short4(q.values), n, ArrayBuffer, true);
+                quantized_any = true;
+                let acc = accessor(view, n, ComponentType::I16, Type::Vec3, false, Some(bounds));
+                (acc, (Some(translation), Some(q.step)))
+            }
+            None => {
+                let (lo, hi) = extent(m.positions.iter().copied(), f32::INFINITY, f32::NEG_INFINITY);
+                let bounds = (serde_json::json!(lo.map(f64::from)), serde_json::json!(hi.map(f64::from)));
+                let view = layout.push(&mut root, ViewData::Vec3(&m.positions), n, ArrayBuffer, packed);
+                (accessor(view, n, ComponentType::F32, Type::Vec3, false, Some(bounds)), (m.translation, None))
+            }
+        };
+        attributes.insert(Valid(json::mesh::Semantic::Positions), root.push(position));
         if !m.normals.is_empty() {
-            let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Vec3(&m.normals), ArrayBuffer);
-            let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, false, None));
-            attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
+            let acc = if packed {
+                quantized_any = true;
+                let view = layout.push(&mut root, ViewData::Byte4(quantize_normals(&m.normals)), n, ArrayBuffer, true);
+                accessor(view, n, ComponentType::I8, Type::Vec3, true, None)
+            } else {
+                let view = layout.push(&mut root, ViewData::Vec3(&m.normals), n, ArrayBuffer, false);
+                accessor(view, n, ComponentType::F32, Type::Vec3, false, None)
+            };
+            attributes.insert(Valid(json::mesh::Semantic::Normals), root.push(acc));
         }
         if !m.colors.is_empty() {
-            let view = push_view(&mut root, &mut views, &mut bin_len, ViewData::Rgba(&m.colors), ArrayBuffer);
+            let view = layout.push(&mut root, ViewData::Rgba(&m.colors), n, ArrayBuffer, packed);
             let acc = root.push(accessor(view, n, ComponentType::U8, Type::Vec4, true, None));
             attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
         }
@@ -277,7 +339,7 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
         } else {
             (ViewData::U32(&m.indices), ComponentType::U32)
         };
-        let view = push_view(&mut root, &mut views, &mut bin_len, data, ElementArrayBuffer);
+        let view = layout.push(&mut root, data, n, ElementArrayBuffer, false);
         let indices = root.push(accessor(view, m.indices.len(), component, Type::Scalar, false, None));
         let blend = m.colors.iter().any(|c| c[3] < 255);
         let mat = match materials[blend as usize] {
@@ -299,13 +361,30 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
             primitives: vec![primitive],
             weights: None,
         });
-        translations.push(m.translation);
         nodes.push(root.push(json::Node {
             mesh: Some(mesh),
-            translation: m.translation.map(|t| t.map(|x| x as f32)),
+            translation: transform.0.map(|t| t.map(|x| x as f32)),
+            scale: transform.1.map(|s| [s as f32; 3]),
             ..Default::default()
         }));
+        transforms.push(transform);
     }
+    // The binary chunk: the views' bytes (written last, straight into the output), or their
+    // meshopt streams.
+    let mut streams: Vec<(usize, usize)> = Vec::new();
+    let mut packed_bin = Vec::new();
+    if packed {
+        let mut plain = Vec::new();
+        for (data, kind) in layout.views.iter().zip(&layout.kinds) {
+            plain.clear();
+            data.write(&mut plain);
+            let stream = meshopt_stream(&plain[..data.byte_len()], *kind);
+            streams.push((packed_bin.len(), stream.len()));
+            packed_bin.extend_from_slice(&stream);
+            packed_bin.resize(packed_bin.len().next_multiple_of(4), 0);
+        }
+    }
+    let bin_len = if packed { packed_bin.len() } else { layout.bin_len };
     if bin_len > 0 {
         root.push(json::Buffer {
             byte_length: USize64::from(bin_len),
@@ -314,16 +393,47 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
             extras: Default::default(),
         });
     }
+    if packed && bin_len > 0 {
+        // The views' uncompressed layout lives in a fallback buffer that holds no bytes.
+        root.push(json::Buffer {
+            byte_length: USize64::from(layout.bin_len),
+            uri: None,
+            extensions: None,
+            extras: Default::default(),
+        });
+        root.extensions_used.push(MESHOPT.to_string());
+        root.extensions_required.push(MESHOPT.to_string());
+        if quantized_any {
+            root.extensions_used.push(QUANTIZATION.to_string());
+            root.extensions_required.push(QUANTIZATION.to_string());
+        }
+    }
     if !nodes.is_empty() {
         let scene = root.push(json::Scene { extensions: None, extras: Default::default(), nodes });
         root.scene = Some(scene);
     }
 
     let mut value = serde_json::to_value(&root).expect("glTF JSON serialises");
-    // gltf-json holds translations as f32 (~0.5 m at planet scale): write the f64 values.
-    for (i, t) in translations.iter().enumerate() {
+    // gltf-json holds translations and scales as f32 (~0.5 m at planet scale): write the f64
+    // values.
+    for (i, (t, s)) in transforms.iter().enumerate() {
         if let Some(t) = t {
             value["nodes"][i]["translation"] = serde_json::json!(t);
+        }
+        if let Some(s) = s {
+            value["nodes"][i]["scale"] = serde_json::json!([s, s, s]);
+        }
+    }
+    if packed && bin_len > 0 {
+        value["buffers"][1]["extensions"] = serde_json::json!({ MESHOPT: { "fallback": true } });
+        for (i, ((offset, len), kind)) in streams.iter().zip(&layout.kinds).enumerate() {
+            let view = &mut value["bufferViews"][i];
+            view["buffer"] = serde_json::json!(1);
+            let count = view["byteLength"].as_u64().expect("a length") / kind.stride() as u64;
+            view["extensions"] = serde_json::json!({ MESHOPT: {
+                "buffer": 0, "byteOffset": offset, "byteLength": len,
+                "byteStride": kind.stride(), "count": count, "mode": kind.mode(),
+            }});
         }
     }
     let mut json_bytes = serde_json::to_vec(&value).expect("glTF JSON serialises");
@@ -341,13 +451,36 @@ pub fn encode_glb(meshes: &[GlbMesh]) -> Result<Vec<u8>, GlbTooLarge> {
     if bin_len > 0 {
         out.extend_from_slice(&(bin_len as u32).to_le_bytes());
         out.extend_from_slice(b"BIN\0");
-        for data in &views {
-            data.write(&mut out);
+        if packed {
+            out.extend_from_slice(&packed_bin);
+        } else {
+            layout.views.iter().for_each(|data| data.write(&mut out));
         }
     }
     debug_assert_eq!(out.len(), total as usize);
     Ok(out)
 }
+
+/// Least and greatest value per axis (`none` and `all` start them: the type's greatest and
+/// least).
+fn extent<T: Copy + PartialOrd>(points: impl Iterator<Item = [T; 3]>, none: T, all: T) -> ([T; 3], [T; 3]) {
+    let (mut lo, mut hi) = ([none; 3], [all; 3]);
+    for p in points {
+        for k in 0..3 {
+            if p[k] < lo[k] {
+                lo[k] = p[k];
+            }
+            if p[k] > hi[k] {
+                hi[k] = p[k];
+            }
+        }
+    }
+    (lo, hi)
+}
+
+/// The extensions a compressed `.glb` requires.
+const MESHOPT: &str = "EXT_meshopt_compression";
+const QUANTIZATION: &str = "KHR_mesh_quantization";
 
 #[cfg(test)]
 #[path = "glb_tests.rs"]

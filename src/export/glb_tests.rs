@@ -35,6 +35,9 @@ pub(crate) fn parse(glb: &[u8]) -> Parsed {
     let root = json::Root::from_slice(json_bytes).expect("JSON chunk parses as glTF");
     let mut errors = Vec::new();
     root.validate(&root, json::Path::new, &mut |path, err| errors.push(format!("{}: {err:?}", path())));
+    // gltf-json knows neither extension of compressed files (the Khronos validator checks them
+    // in CI).
+    errors.retain(|e| !["EXT_meshopt_compression", "KHR_mesh_quantization"].iter().any(|x| e.contains(x)));
     assert!(errors.is_empty(), "{errors:?}");
     let value = serde_json::from_slice(json_bytes).unwrap();
     Parsed { root, value, bin }
@@ -159,7 +162,7 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
         translation: Some([6_371_000.125, -12.5, 3.25]),
     };
     let water = GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..tri.clone() };
-    let glb = encode_glb(&[tri.clone(), GlbMesh::default(), water]).unwrap();
+    let glb = encode_glb(&[tri.clone(), GlbMesh::default(), water], Compression::None).unwrap();
     let p = parse(&glb);
     assert_eq!(p.root.nodes.len(), 2, "the empty mesh is left out");
     assert_eq!(p.root.meshes.len(), 2);
@@ -177,15 +180,23 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
     assert!(!p.root.meshes[1].primitives[0].attributes.contains_key(&Valid(json::mesh::Semantic::Normals)));
     assert_eq!(
         glb,
-        encode_glb(&[
-            tri,
-            GlbMesh::default(),
-            GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..encode_sample() }
-        ])
+        encode_glb(
+            &[
+                tri,
+                GlbMesh::default(),
+                GlbMesh {
+                    colors: vec![[0, 0, 255, 128]; 3],
+                    normals: Vec::new(),
+                    translation: None,
+                    ..encode_sample()
+                }
+            ],
+            Compression::None
+        )
         .unwrap()
     );
 
-    let empty = parse(&encode_glb(&[]).unwrap());
+    let empty = parse(&encode_glb(&[], Compression::None).unwrap());
     assert!(empty.bin.is_empty() && empty.root.buffers.is_empty() && empty.root.scenes.is_empty());
 }
 
@@ -200,14 +211,14 @@ fn encode_sample() -> GlbMesh {
 #[test]
 #[should_panic(expected = "index out of range")]
 fn encode_glb_rejects_bad_indices() {
-    let _ = encode_glb(&[GlbMesh { indices: vec![0, 1, 3], ..encode_sample() }]);
+    let _ = encode_glb(&[GlbMesh { indices: vec![0, 1, 3], ..encode_sample() }], Compression::None);
 }
 
 /// The container's lengths are `u32`: a `.glb` one byte over 4 GiB is refused, naming its size,
 /// instead of being written with a wrapped length.
 #[test]
 fn glb_lengths_stop_at_the_containers_limit() {
-    let sample = encode_glb(&[encode_sample()]).unwrap();
+    let sample = encode_glb(&[encode_sample()], Compression::None).unwrap();
     let json_len = u32::from_le_bytes(sample[12..16].try_into().unwrap()) as usize;
     let bin_len = u32::from_le_bytes(sample[20 + json_len..24 + json_len].try_into().unwrap()) as usize;
     assert_eq!(glb_len(json_len, bin_len), Ok(sample.len() as u32));

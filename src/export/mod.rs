@@ -12,6 +12,7 @@ pub mod dem;
 pub mod face_index;
 pub mod geojson;
 pub mod glb;
+pub mod glb_pack;
 pub mod preview;
 pub mod quantized_mesh;
 pub mod raster;

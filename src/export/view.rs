@@ -2,7 +2,7 @@
 //! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
 
 use super::climate::water_colour;
-use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh, GlbTooLarge};
+use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh, GlbTooLarge};
 use super::surface_normals;
 use super::water::{shows_water, water_levels};
 use crate::mesh::terrain::lift;
@@ -19,16 +19,20 @@ pub fn local_origin(eye: DVec3, radius: f64) -> DVec3 {
     eye.normalize_or(DVec3::X) * radius
 }
 
-/// Terrain plus water surface as one `.glb`, positions relative to `origin`; refused when it
-/// would be over the container's 4 GiB (about 80 million faces of a view mostly under water).
-pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3) -> Result<Vec<u8>, GlbTooLarge> {
+/// Terrain plus water surface as one `.glb`, positions relative to `origin`, stored as
+/// `compression` says; refused when it would be over the container's 4 GiB (about 80 million
+/// faces of a view mostly under water).
+pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3, compression: Compression) -> Result<Vec<u8>, GlbTooLarge> {
     let triangles = mesh.triangles();
     let normals = surface_normals(mesh, &triangles);
     let levels = water_levels(mesh, &triangles);
-    encode_glb(&[
-        terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
-        water_mesh(mesh, origin, &triangles, &levels),
-    ])
+    encode_glb(
+        &[
+            terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
+            water_mesh(mesh, origin, &triangles, &levels),
+        ],
+        compression,
+    )
 }
 
 /// Of the mesh's `triangles` ([`Mesh::triangles`]), those that show water at the water
@@ -114,8 +118,8 @@ mod tests {
             }
         }
         assert!(near > 100, "{near}");
-        let glb = view_glb(a.mesh(), &p, origin).unwrap();
-        assert_eq!(view_glb(a.mesh(), &p, origin).unwrap(), glb);
+        let glb = view_glb(a.mesh(), &p, origin, Compression::None).unwrap();
+        assert_eq!(view_glb(a.mesh(), &p, origin, Compression::None).unwrap(), glb);
         // A valid glTF: the terrain with normals and the water surface, both at the origin.
         let parsed = crate::export::glb::tests::parse(&glb);
         assert_eq!(parsed.root.nodes.len(), 2);

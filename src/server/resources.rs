@@ -14,6 +14,7 @@ use crate::adapt::gpu::GpuAdaption;
 use crate::adapt::{Adapter, Camera};
 use crate::build::Planet;
 use crate::export;
+use crate::export::glb::Compression;
 use crate::params::Params;
 use crate::query::{pairs, percent_decode};
 use axum::body::Bytes;
@@ -68,6 +69,7 @@ enum Job {
     View {
         cam: Camera,
         max_faces: Option<usize>,
+        compression: Compression,
     },
     Rivers,
     Raster {
@@ -86,6 +88,18 @@ pub fn no_query(query: Option<&str>) -> Result<(), ApiError> {
         Some((k, _)) => Err(unknown_key(k, "none")),
         None => Ok(()),
     }
+}
+
+/// The (decoded) value of a `compression` query parameter (`meshopt` or `none`), or a 422
+/// naming it.
+pub fn compression_value(v: &str) -> Result<Compression, ApiError> {
+    Compression::parse(v).ok_or_else(|| {
+        ApiError::unprocessable(
+            "invalid_parameter",
+            "compression",
+            format!("compression {:?} is neither meshopt nor none", crate::query::cut(v)),
+        )
+    })
 }
 
 /// Fills a query key's slot, or a 422 naming the key when it is given twice.
@@ -108,14 +122,25 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
             let (cam, rest) = Camera::parse_query(query, params.radius_m)
                 .map_err(|e| ApiError::unprocessable("invalid_camera", e.field, e.message))?;
             let mut max_faces = None;
+            let mut compression = None;
             for (k, v) in rest {
-                if k != "max_faces" {
-                    return Err(unknown_key(&k, "eye, target, up, fov, width, height, land_px, water_px, max_faces"));
+                match k.as_str() {
+                    "max_faces" => max_faces = Some(whole_number_in("max_faces", &v, 1, max_faces_cap)?),
+                    "compression" => set_once(&mut compression, &k, compression_value(&v)?)?,
+                    _ => {
+                        return Err(unknown_key(
+                            &k,
+                            "eye, target, up, fov, width, height, land_px, water_px, max_faces, compression",
+                        ))
+                    }
                 }
-                max_faces = Some(whole_number_in("max_faces", &v, 1, max_faces_cap)?);
             }
-            let norm = budget_query(cam.to_query(), max_faces, max_faces_cap);
-            Ok((Job::View { cam, max_faces }, norm))
+            let compression = compression.unwrap_or_default();
+            let mut norm = budget_query(cam.to_query(), max_faces, max_faces_cap);
+            if compression != Compression::default() {
+                norm.push_str(&format!("&compression={}", compression.as_str()));
+            }
+            Ok((Job::View { cam, max_faces, compression }, norm))
         }
         Resource::Rivers => {
             no_query(Some(query))?;
@@ -176,12 +201,12 @@ fn render(
 ) -> Result<Vec<u8>, ApiError> {
     let mesh = &planet.mesh;
     Ok(match (res, job) {
-        (_, Job::View { cam, max_faces }) => {
+        (_, Job::View { cam, max_faces, compression }) => {
             let budget = view_budget(planet, *max_faces, cap)?;
             let mut adapter = Adapter::new(mesh.clone(), params.clone()).with_gpu(gpu);
             adapter.adapt(cam, Some(budget));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
-            export::view::view_glb(adapter.mesh(), params, origin)
+            export::view::view_glb(adapter.mesh(), params, origin, *compression)
                 .map_err(|e| ApiError::unprocessable("too_large", "max_faces", format!("{e}: ask for fewer faces")))?
         }
         (_, Job::Rivers) => export::rivers_geojson(planet, params).into_bytes(),
@@ -199,9 +224,10 @@ fn render(
 /// inside partly wet faces, and is double-sided; 4: a refined river vertex's tangent lies in its
 /// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water; 6:
 /// splits of an elevation map planet follow the map where it resolves them; 7: rivers' water
-/// as wide as their channels, a regional elevation map's coast outside its bounds), so
+/// as wide as their channels, a regional elevation map's coast outside its bounds; 8: view.glb
+/// and 3D Tiles contents quantized and meshopt-compressed by default), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "7";
+pub const ANSWERS_REVISION: &str = "8";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

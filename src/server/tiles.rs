@@ -9,10 +9,12 @@
 //! planet's deepest level, or `.json` for a tile that starts no external tileset, answers 404.
 
 use super::error::ApiError;
-use super::resources::{cache_key, cached, cost, no_query, Derived};
+use super::resources::{cache_key, cached, compression_value, cost, unknown_key, Derived};
 use super::state::{AppState, Cached, Entry};
 use crate::build::Planet;
+use crate::export::glb::Compression;
 use crate::export::tiles::{self, is_subtree_root, KeyError, PlanetTiles, TileFile, TileKey};
+use crate::query::{pairs, percent_decode};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::HeaderMap;
@@ -25,6 +27,30 @@ pub(super) async fn planet_entry(state: &AppState, id: &str) -> Result<Arc<Entry
     state.lookup(id).await?.ok_or_else(|| ApiError::not_found(&format!("planet {id:?}")))
 }
 
+/// The query of a tileset or tile route: `compression` (`meshopt`, the default, or `none`),
+/// given at most once or repeated with one value (a client may carry a tileset's query to the
+/// URIs it lists, which carry it already), and its normal form.
+fn tile_query(query: Option<&str>) -> Result<(Compression, String), ApiError> {
+    let mut compression = None;
+    for (k, v) in pairs(query.unwrap_or("")) {
+        if k != "compression" {
+            return Err(unknown_key(k, "compression"));
+        }
+        let c = compression_value(&percent_decode(v))?;
+        if compression.is_some_and(|was| was != c) {
+            return Err(ApiError::unprocessable(
+                "duplicate_parameter",
+                "compression",
+                "query parameter \"compression\" is given twice with different values".to_string(),
+            ));
+        }
+        compression = Some(c);
+    }
+    let c = compression.unwrap_or_default();
+    let norm = if c == Compression::default() { String::new() } else { format!("compression={}", c.as_str()) };
+    Ok((c, norm))
+}
+
 /// `GET /v1/planets/{id}/tileset.json`.
 pub async fn tileset(
     State(state): State<Arc<AppState>>,
@@ -33,18 +59,18 @@ pub async fn tileset(
     headers: HeaderMap,
 ) -> Answer {
     let entry = planet_entry(&state, &id).await?;
-    no_query(query.as_deref())?;
+    let (compression, norm) = tile_query(query.as_deref())?;
     let derived = Derived {
         route: "tileset.json".into(),
-        norm: String::new(),
+        norm: norm.clone(),
         content_type: "application/json",
         cost: cost(16 << 20, None, true),
     };
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
-        let file = tiling.tileset_json(tiling.max_level());
-        keep_contents(&shared, &id, file.contents);
+        let file = tiling.tileset_json(tiling.max_level(), compression);
+        keep_contents(&shared, &id, &norm, file.contents);
         Ok(file.json)
     })
     .await
@@ -58,7 +84,7 @@ pub async fn tile(
     headers: HeaderMap,
 ) -> Answer {
     let entry = planet_entry(&state, &id).await?;
-    no_query(query.as_deref())?;
+    let (compression, norm) = tile_query(query.as_deref())?;
     let max_level = tiles::max_level(&entry.input.params);
     let file = TileFile::parse(&name, max_level).map_err(|e| match e {
         KeyError::Malformed => ApiError::unprocessable(
@@ -77,7 +103,7 @@ pub async fn tile(
     };
     let derived = Derived {
         route: format!("tiles/{}", file.name()),
-        norm: String::new(),
+        norm: norm.clone(),
         content_type,
         cost: cost(16 << 20, None, true),
     };
@@ -85,10 +111,10 @@ pub async fn tile(
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
         Ok(match file {
-            TileFile::Content(key) => tiling.content(key).glb,
+            TileFile::Content(key) => tiling.content(key, compression).glb,
             TileFile::Subtree(key) => {
-                let file = tiling.subtree_json(key, max_level).expect("checked to start a tileset");
-                keep_contents(&shared, &id, file.contents);
+                let file = tiling.subtree_json(key, max_level, compression).expect("checked to start a tileset");
+                keep_contents(&shared, &id, &norm, file.contents);
                 file.json
             }
         })
@@ -112,13 +138,14 @@ pub(super) fn tiling(state: &AppState, entry: &Entry, planet: Arc<Planet>) -> Ar
     made
 }
 
-/// Caches tile contents made on the way as the answers of their routes.
-fn keep_contents(state: &AppState, id: &str, contents: Vec<(TileKey, Vec<u8>)>) {
+/// Caches tile contents made on the way as the answers of their routes (with the query whose
+/// normal form is `norm`).
+fn keep_contents(state: &AppState, id: &str, norm: &str, contents: Vec<(TileKey, Vec<u8>)>) {
     if state.entry(id).is_none() {
         return;
     }
     for (key, glb) in contents {
-        let cache_key = cache_key(id, &format!("tiles/{}", TileFile::Content(key).name()), "");
+        let cache_key = cache_key(id, &format!("tiles/{}", TileFile::Content(key).name()), norm);
         let bytes = Bytes::from(glb);
         let weight = bytes.len() + cache_key.len();
         state.cache.insert(cache_key, Cached::Response(bytes), weight);

@@ -11,6 +11,8 @@ import {
   Vector3,
   WebGLRenderer,
 } from 'three';
+import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { MeshoptDecoder } from 'three/examples/jsm/libs/meshopt_decoder.module.js';
 import { GlobeControls, TilesRenderer } from '3d-tiles-renderer/three';
 
 const $ = (id) => document.getElementById(id);
@@ -61,6 +63,11 @@ function open(id) {
   stats.tilesLoaded = 0;
   stats.tileRequests = 0;
   tiles = new TilesRenderer(`/v1/planets/${id}/tileset.json`);
+  // Tile contents are quantized (KHR_mesh_quantization) and meshopt-compressed
+  // (EXT_meshopt_compression): their glTF loader gets three.js's meshopt decoder.
+  const gltf = new GLTFLoader(tiles.manager);
+  gltf.setMeshoptDecoder(MeshoptDecoder);
+  tiles.manager.addHandler(/\.(gltf|glb)$/g, gltf);
   // The tileset's frame is the planet frame (planet-centred metres, +Z north); the scene keeps
   // it as its world frame, so camera positions read directly as planet coordinates.
   tiles.errorTarget = 6;

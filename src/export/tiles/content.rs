@@ -12,7 +12,7 @@ use super::bounds::{local_axes, OrientedBox};
 use super::key::TileKey;
 use super::ring::border_normals;
 use super::tree::{Refiner, ROOTS};
-use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, GlbMesh};
+use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
 use crate::export::view::water_mesh;
 use crate::export::water::water_levels;
 use crate::mesh::terrain::lift;
@@ -69,8 +69,14 @@ pub fn cell_frame(refiner: &mut Refiner, key: TileKey) -> ([u32; 3], [DVec3; 3])
     (node, axes)
 }
 
-/// The content of `key`.
-pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, params: &Params) -> TileContent {
+/// The content of `key`, its `.glb` stored as `compression` says.
+pub fn tile_content(
+    refiner: &mut Refiner,
+    key: TileKey,
+    spec: &ContentSpec,
+    params: &Params,
+    compression: Compression,
+) -> TileContent {
     let (cell, axes) = cell_frame(refiner, key);
     let mut leaves = Vec::with_capacity(1 << spec.content_depth);
     refiner.descendants(cell, spec.content_depth, &mut leaves);
@@ -98,7 +104,7 @@ pub fn tile_content(refiner: &mut Refiner, key: TileKey, spec: &ContentSpec, par
     let mut water = water_mesh(&surface, origin, &triangles, &levels);
     water.translation = None;
     // A tile holds 1,024 triangles (plus skirts and water): far below the container's limit.
-    let glb = encode_glb(&[terrain, water]).expect("a tile fits a .glb");
+    let glb = encode_glb(&[terrain, water], compression).expect("a tile fits a .glb");
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
 }
 

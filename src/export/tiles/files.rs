@@ -4,6 +4,7 @@
 //! children.
 
 use super::{is_subtree_root, PlanetTiles, TileFile, TileKey};
+use crate::export::glb::Compression;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
@@ -21,8 +22,9 @@ pub struct WriteStats {
 
 impl PlanetTiles {
     /// Writes levels `0..levels` (at most the planet's deepest) to `dir`, level by level (a
-    /// tile's placement needs its parent's), contents made in parallel.
-    pub fn write_files(&self, dir: &Path, levels: u8) -> std::io::Result<WriteStats> {
+    /// tile's placement needs its parent's), contents made in parallel and stored as
+    /// `compression` says.
+    pub fn write_files(&self, dir: &Path, levels: u8, compression: Compression) -> std::io::Result<WriteStats> {
         let start = Instant::now();
         let last = levels.clamp(1, self.max_level() + 1) - 1;
         let tiles_dir = dir.join("tiles");
@@ -32,7 +34,7 @@ impl PlanetTiles {
         loop {
             for chunk in level.chunks(64) {
                 let made: Vec<(TileKey, Vec<u8>)> =
-                    chunk.par_iter().map(|&k| (k, self.placed_content(k).glb)).collect();
+                    chunk.par_iter().map(|&k| (k, self.placed_content(k, compression).glb)).collect();
                 for (key, glb) in made {
                     stats.tiles += 1;
                     stats.tile_bytes += glb.len() as u64;
@@ -44,14 +46,14 @@ impl PlanetTiles {
             }
             level = level.iter().flat_map(|k| k.children()).collect();
         }
-        std::fs::write(dir.join("tileset.json"), self.tileset_json(last).json)?;
+        std::fs::write(dir.join("tileset.json"), self.tileset_json(last, compression).json)?;
         stats.tileset_files = 1;
         let mut key_level: Vec<TileKey> = (0..8).map(TileKey::root).collect();
         while key_level[0].level < last {
             key_level = key_level.iter().flat_map(|k| k.children()).collect();
             if is_subtree_root(key_level[0].level) {
                 for &key in &key_level {
-                    let file = self.subtree_json(key, last).expect("a subtree root");
+                    let file = self.subtree_json(key, last, compression).expect("a subtree root");
                     std::fs::write(tiles_dir.join(TileFile::Subtree(key).name()), file.json)?;
                     stats.tileset_files += 1;
                 }

@@ -44,6 +44,7 @@ pub use tileset::{is_subtree_root, TilesetFile};
 pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::build::Planet;
+use crate::export::glb::Compression;
 use crate::params::Params;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -217,19 +218,20 @@ impl PlanetTiles {
         }
     }
 
-    /// The content of tile `key`, which must be at most [`PlanetTiles::max_level`] deep. A
-    /// function of the key alone: no other tile is made or needed.
-    pub fn content(&self, key: TileKey) -> TileContent {
+    /// The content of tile `key`, which must be at most [`PlanetTiles::max_level`] deep, its
+    /// `.glb` stored as `compression` says. A function of the key alone: no other tile is made
+    /// or needed.
+    pub fn content(&self, key: TileKey, compression: Compression) -> TileContent {
         assert!(key.level <= self.max_level, "tile {key} is deeper than level {}", self.max_level);
         let mut refiner = self.refiner();
-        let content = content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params);
+        let content = content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params, compression);
         self.recycle(refiner);
         content
     }
 
     /// The content of `key`, placed (which places its ancestors first).
-    pub fn placed_content(&self, key: TileKey) -> TileContent {
-        let content = self.content(key);
+    pub fn placed_content(&self, key: TileKey, compression: Compression) -> TileContent {
+        let content = self.content(key, compression);
         self.place(key, &content);
         content
     }
@@ -239,7 +241,7 @@ impl PlanetTiles {
     pub fn planet_bounds(&self) -> OrientedBox {
         *self.planet_bounds.get_or_init(|| {
             let roots: Vec<OrientedBox> =
-                (0..8).into_par_iter().map(|r| self.content(TileKey::root(r)).bounds).collect();
+                (0..8).into_par_iter().map(|r| self.content(TileKey::root(r), Compression::None).bounds).collect();
             OrientedBox::fit(roots.iter().flat_map(|b| b.corners()), [DVec3::X, DVec3::Y, DVec3::Z], 0.0)
         })
     }
@@ -249,12 +251,12 @@ impl PlanetTiles {
         if let Some(p) = self.placements.lock().expect("placements lock").get(&key) {
             return *p;
         }
-        self.place(key, &self.content(key))
+        self.place(key, &self.content(key, Compression::None))
     }
 
     /// Makes the placements of `keys` (parents before children), their contents in parallel;
-    /// returns the contents made on the way, as `(key, glb)`.
-    pub fn place_all(&self, keys: &[TileKey]) -> Vec<(TileKey, Vec<u8>)> {
+    /// returns the contents made on the way, as `(key, glb)` stored as `compression` says.
+    pub fn place_all(&self, keys: &[TileKey], compression: Compression) -> Vec<(TileKey, Vec<u8>)> {
         let mut made = Vec::new();
         let mut by_level: Vec<TileKey> = keys.to_vec();
         by_level.sort_by_key(|k| (k.level, *k));
@@ -267,7 +269,8 @@ impl PlanetTiles {
                     self.placement(parent);
                 }
             }
-            let contents: Vec<(TileKey, Vec<u8>)> = todo.par_iter().map(|&k| (k, self.placed_content(k).glb)).collect();
+            let contents: Vec<(TileKey, Vec<u8>)> =
+                todo.par_iter().map(|&k| (k, self.placed_content(k, compression).glb)).collect();
             made.extend(contents);
         }
         made

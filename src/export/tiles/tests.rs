@@ -75,7 +75,7 @@ fn level_zero_closes_the_sphere_without_cracks() {
     let t = tiles();
     let mut edges: Vec<([u64; 3], [u64; 3])> = Vec::new();
     for root in 0..8 {
-        let c = t.content(TileKey::root(root));
+        let c = t.content(TileKey::root(root), Compression::None);
         assert_eq!(c.surface.faces.len(), 1 << CONTENT_DEPTH);
         let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
         edges.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
@@ -95,7 +95,7 @@ fn neighbouring_tiles_share_their_border_vertices() {
     let keys: Vec<TileKey> = TileKey::root(0).children().iter().flat_map(|k| k.children()).collect();
     let mut all: Vec<([u64; 3], [u64; 3])> = Vec::new();
     for &k in &keys {
-        let c = t.content(k);
+        let c = t.content(k, Compression::None);
         assert!(c.splits > 0, "level 2 is finer than the test planet's base mesh");
         let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
         all.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
@@ -103,7 +103,7 @@ fn neighbouring_tiles_share_their_border_vertices() {
     let set: HashSet<_> = all.iter().copied().collect();
     let shared = all.iter().filter(|(a, b)| set.contains(&(*b, *a))).count();
     // The 16 tiles tile root 0: all edges but those on root 0's own border are shared.
-    let outer = content::border_edges(&t.content(TileKey::root(0)).surface.triangles()).len() * 4;
+    let outer = content::border_edges(&t.content(TileKey::root(0), Compression::None).surface.triangles()).len() * 4;
     assert_eq!(shared + outer, all.len(), "outer border edges: {outer}");
 }
 
@@ -155,13 +155,13 @@ fn normals_are_seamless(contents: &[TileContent]) -> (usize, usize) {
 fn neighbouring_tiles_light_their_common_border_alike() {
     // Level 0 covers the sphere: every vertex's ring is in the union, across the roots' borders.
     let t = tiles();
-    let level0: Vec<TileContent> = (0..8).map(|r| t.content(TileKey::root(r))).collect();
+    let level0: Vec<TileContent> = (0..8).map(|r| t.content(TileKey::root(r), Compression::None)).collect();
     let (shared, whole) = normals_are_seamless(&level0);
     let vertices: usize = level0.iter().map(|c| c.surface.vertices.len()).sum::<usize>() - shared;
     assert!(shared > 8 * 30 && whole == vertices, "{shared} shared, {whole} of {vertices} whole rings");
     // Level 2 inside root 0 (shared vertices alike; whole rings everywhere but on root 0's border).
     let keys: Vec<TileKey> = TileKey::root(0).children().iter().flat_map(|k| k.children()).collect();
-    let level2: Vec<TileContent> = keys.iter().map(|&k| t.content(k)).collect();
+    let level2: Vec<TileContent> = keys.iter().map(|&k| t.content(k, Compression::None)).collect();
     let (shared, whole) = normals_are_seamless(&level2);
     assert!(shared > 16 * 20 && whole > 16 * 450, "{shared} shared, {whole} whole rings");
 }
@@ -169,13 +169,16 @@ fn neighbouring_tiles_light_their_common_border_alike() {
 #[test]
 fn glb_positions_plus_transforms_give_the_mesh_positions() {
     let t = tiles();
-    let file = t.tileset_json(1);
+    let file = t.tileset_json(1, Compression::None);
     let doc: Value = serde_json::from_slice(&file.json).unwrap();
     let level0 = &doc["root"]["children"][3];
     let key = TileKey::root(3);
-    assert_eq!(level0["content"]["uri"], "tiles/3.glb");
+    assert_eq!(level0["content"]["uri"], "tiles/3.glb?compression=none");
+    let packed: Value = serde_json::from_slice(&t.tileset_json(1, Compression::Meshopt).json).unwrap();
+    assert_eq!(packed["root"]["children"][3]["content"]["uri"], "tiles/3.glb");
+    assert_eq!(packed["root"]["children"][3]["children"][1]["content"]["uri"], "tiles/31.json");
     let origin = translation_of(&doc["root"]) + translation_of(level0);
-    let content = t.content(key);
+    let content = t.content(key, Compression::None);
     let positions = glb_positions(&content.glb);
     assert!(positions.len() > content.surface.vertices.len(), "skirts add vertices");
     for (v, q) in content.surface.vertices.iter().zip(&positions) {
@@ -184,14 +187,14 @@ fn glb_positions_plus_transforms_give_the_mesh_positions() {
         assert!(world.distance(v.p()) < 1.0, "{world} vs {:?}", v.pos);
     }
     // The same through a subtree file and a level-1 tile.
-    let sub = t.subtree_json(key.child(2), 2).unwrap();
+    let sub = t.subtree_json(key.child(2), 2, Compression::None).unwrap();
     let sub_doc: Value = serde_json::from_slice(&sub.json).unwrap();
     let reference = &level0["children"][2];
-    assert_eq!(reference["content"]["uri"], "tiles/32.json");
+    assert_eq!(reference["content"]["uri"], "tiles/32.json?compression=none");
     assert!(reference.get("children").is_none());
     assert_eq!(reference["boundingVolume"], sub_doc["root"]["boundingVolume"]);
     let origin1 = origin + translation_of(reference) + translation_of(&sub_doc["root"]);
-    let child = t.content(key.child(2));
+    let child = t.content(key.child(2), Compression::None);
     for (v, q) in child.surface.vertices.iter().zip(glb_positions(&child.glb)) {
         assert!((origin1 + y_up_to_z_up(q)).distance(v.p()) < 0.5);
     }
@@ -217,7 +220,7 @@ fn check_tiles(
         uris.push(uri.to_string());
         if let Some(name) = uri.strip_suffix(".glb") {
             let key = TileKey::parse(name.trim_start_matches("tiles/"), t.max_level()).unwrap();
-            let c = t.content(key);
+            let c = t.content(key, Compression::None);
             for v in &c.surface.vertices {
                 assert!(b.contains(v.p(), 1e-3), "tile {key}: a vertex outside its box");
                 if let Some((pb, _)) = parent {
@@ -234,7 +237,7 @@ fn check_tiles(
 #[test]
 fn tileset_files_are_well_formed_and_nested() {
     let t = tiles();
-    let top: Value = serde_json::from_slice(&t.tileset_json(t.max_level()).json).unwrap();
+    let top: Value = serde_json::from_slice(&t.tileset_json(t.max_level(), Compression::Meshopt).json).unwrap();
     assert_eq!(top["asset"]["version"], "1.1");
     assert_eq!(top["extensionsUsed"][0], "3DTILES_ellipsoid");
     let r = top["extensions"]["3DTILES_ellipsoid"]["radii"][0].as_f64().unwrap();
@@ -254,7 +257,8 @@ fn tileset_files_are_well_formed_and_nested() {
     let key = TileKey::root(5).child(1);
     let reference = &top["root"]["children"][5]["children"][1];
     let origin = translation_of(&top["root"]["children"][5]) + translation_of(reference);
-    let sub: Value = serde_json::from_slice(&t.subtree_json(key, t.max_level()).unwrap().json).unwrap();
+    let sub: Value =
+        serde_json::from_slice(&t.subtree_json(key, t.max_level(), Compression::Meshopt).unwrap().json).unwrap();
     assert_eq!(sub["root"]["refine"], "REPLACE");
     assert_eq!(sub["geometricError"], reference["geometricError"]);
     let mut sub_uris = Vec::new();
@@ -264,7 +268,10 @@ fn tileset_files_are_well_formed_and_nested() {
     assert_eq!(sub_uris.len(), 1 + 4 + 16);
     assert_eq!(sub_uris[0], "51.glb");
     assert!(sub_uris.iter().all(|u| u.starts_with("51") && TileFile::parse(u, t.max_level()).is_ok()));
-    assert!(t.subtree_json(TileKey::root(5).child(1).child(0), 20).is_none(), "level 2 starts no file");
+    assert!(
+        t.subtree_json(TileKey::root(5).child(1).child(0), 20, Compression::Meshopt).is_none(),
+        "level 2 starts no file"
+    );
 }
 
 #[test]
@@ -272,10 +279,13 @@ fn contents_and_files_are_deterministic() {
     let a = tiles();
     let b = PlanetTiles::new(Arc::new(test_planet().clone()), a.params.clone()).unwrap();
     let key = TileKey::root(6).child(3).child(1);
-    assert_eq!(a.content(key).glb, b.content(key).glb);
+    assert_eq!(a.content(key, Compression::None).glb, b.content(key, Compression::None).glb);
     // Files do not depend on what was made before.
     let sub = TileKey::root(6).child(3);
-    assert_eq!(a.subtree_json(sub, 4).unwrap().json, b.subtree_json(sub, 4).unwrap().json);
+    assert_eq!(
+        a.subtree_json(sub, 4, Compression::None).unwrap().json,
+        b.subtree_json(sub, 4, Compression::None).unwrap().json
+    );
 }
 
 #[test]
@@ -283,7 +293,7 @@ fn tile_vertices_are_the_vertices_of_a_view() {
     use crate::adapt::{Adapter, Camera};
     let t = tiles();
     let key = TileKey::root(0).child(1).child(2).child(0).child(3);
-    let c = t.content(key);
+    let c = t.content(key, Compression::None);
     let r = t.params.radius_m;
     let top = c.surface.vertices.iter().map(|v| v.p().length()).fold(r, f64::max);
     let eye = c.bounds.centre.normalize() * (top + 30_000.0);
@@ -304,7 +314,7 @@ fn tile_vertices_are_the_vertices_of_a_view() {
 fn skirts_hang_below_the_border() {
     let t = tiles();
     let key = TileKey::root(2).child(0);
-    let c = t.content(key);
+    let c = t.content(key, Compression::None);
     let border = content::border_edges(&c.surface.triangles());
     let positions = glb_positions(&c.glb);
     let n = c.surface.vertices.len();
@@ -328,7 +338,7 @@ fn deep_tiles_stay_small_and_precise() {
     for q in [1, 3, 0, 2, 2, 1, 3, 0, 1, 1, 2, 0] {
         key = key.child(q);
     }
-    let c = t.content(key);
+    let c = t.content(key, Compression::None);
     assert_eq!(c.surface.faces.len(), 1 << CONTENT_DEPTH);
     let e = t.edge_length(key.level);
     let max_half = c.bounds.half.iter().copied().fold(0.0, f64::max);
@@ -347,7 +357,7 @@ fn boxes_nest_without_falling_back_to_their_parents_axes() {
     let mut level = vec![TileKey::root(1)];
     for _ in 0..4 {
         for &k in &level {
-            let own = t.content(k).bounds;
+            let own = t.content(k, Compression::None).bounds;
             assert_eq!(t.placement(k).bounds, own, "tile {k} fell back to its parent's axes");
         }
         level = level.iter().flat_map(|k| k.children()).collect();
