@@ -29,8 +29,9 @@ pub struct GlbMesh {
     pub positions: Vec<[f32; 3]>,
     /// Unit normals, one per position, or empty to leave NORMAL out.
     pub normals: Vec<[f32; 3]>,
-    /// sRGB colours with alpha, one per position, or empty to leave COLOR_0 out. Any alpha below
-    /// 255 gives the primitive a blended material.
+    /// Colours with alpha, one per position, or empty to leave COLOR_0 out: linear components,
+    /// as glTF defines COLOR_0 ([`linear_rgba`] makes them from sRGB). Any alpha below 255 gives
+    /// the primitive a blended material.
     pub colors: Vec<[u8; 4]>,
     /// Triangles, counter-clockwise seen from the front.
     pub indices: Vec<u32>,
@@ -60,18 +61,25 @@ pub fn to_gltf_axes(p: [f64; 3]) -> [f64; 3] {
     [p[0], p[2], -p[1]]
 }
 
-/// Colour of river vertices in the planet model.
+/// Colour of river vertices in the planet model (`planet.glb`, which has no water surface).
 const RIVER_RGB: [u8; 3] = [40, 90, 185];
 
 /// The planet's base mesh as a `.glb`: one mesh, one primitive, POSITION / NORMAL / COLOR_0 and
-/// u32 indices, coloured by vertex type and altitude with the climate lookup.
+/// u32 indices, coloured by vertex type and altitude with the climate lookup, river vertices
+/// blue (the model shows the network; views and tiles draw rivers as their water surface).
 pub fn planet_glb(mesh: &Mesh, params: &Params) -> Result<Vec<u8>, GlbTooLarge> {
     encode_glb(&[planet_mesh(mesh, params)], Compression::None)
 }
 
 /// The base mesh as a [`GlbMesh`] (glTF axes, no translation).
 pub fn planet_mesh(mesh: &Mesh, params: &Params) -> GlbMesh {
-    terrain_mesh(mesh, params, None)
+    let mut model = terrain_mesh(mesh, params, None);
+    for (c, v) in model.colors.iter_mut().zip(&mesh.vertices) {
+        if v.flags.contains(VertexFlags::RIVER) {
+            *c = linear_rgba(RIVER_RGB, 255);
+        }
+    }
+    model
 }
 
 /// The terrain of a mesh as a [`GlbMesh`] in glTF axes; with `origin` (planet frame), positions
@@ -113,19 +121,34 @@ pub fn terrain_mesh_with_normals(
         colors: vertices
             .par_iter()
             .map(|v| {
-                let [r, g, b] = if v.flags.contains(VertexFlags::RIVER) {
-                    RIVER_RGB
-                } else if !v.flags.intersects(land) {
+                // A river vertex is coloured as its land: its water, as wide as its channel, is
+                // the water surface's (a coarse face beside a river is not a river).
+                let [r, g, b] = if !v.flags.intersects(land) {
                     water_colour(sea - v.ground)
                 } else {
                     climate_colour(params.climate, lat_lon(v.p()).0, v.ground - sea)
                 };
-                [r, g, b, 255]
+                linear_rgba([r, g, b], 255)
             })
             .collect(),
         indices: triangles.par_iter().flat_map_iter(|t| *t).collect(),
         translation: origin.map(|o| to_gltf_axes(o.to_array())),
     }
+}
+
+/// An sRGB colour as glTF's COLOR_0 holds it: linear components (the format's "linear
+/// multiplier"; a client that shows sRGB bytes as linear draws everything washed out), 8 bits
+/// each, and `alpha` as it is.
+pub fn linear_rgba(rgb: [u8; 3], alpha: u8) -> [u8; 4] {
+    static LINEAR: std::sync::OnceLock<[u8; 256]> = std::sync::OnceLock::new();
+    let table = LINEAR.get_or_init(|| {
+        std::array::from_fn(|i| {
+            let c = i as f64 / 255.0;
+            let l = if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) };
+            (l * 255.0).round() as u8
+        })
+    });
+    [table[rgb[0] as usize], table[rgb[1] as usize], table[rgb[2] as usize], alpha]
 }
 
 /// The data of one buffer view, written into the binary chunk once the JSON before it is known.

@@ -230,3 +230,31 @@ fn glb_lengths_stop_at_the_containers_limit() {
     assert!(e.to_string().contains("4294967296 bytes, over the 4 GiB"), "{e}");
     assert!(glb_len(usize::MAX / 2, usize::MAX / 2).is_err());
 }
+
+/// COLOR_0 is linear: sRGB bytes are converted (black and white stay, mid grey darkens to
+/// 0.216, a colour keeps its hue), and the base mesh's colours are its climate colours so.
+#[test]
+fn vertex_colours_are_linear() {
+    assert_eq!(linear_rgba([0, 128, 255], 7), [0, 55, 255, 7]);
+    let [r, g, b, _] = linear_rgba([200, 150, 100], 255);
+    assert!(r > g && g > b && b < 40, "{r} {g} {b}");
+    let planet = test_planet();
+    let params = Params::default();
+    let mesh = planet_mesh(&planet.mesh, &params);
+    let land = planet
+        .mesh
+        .vertices
+        .iter()
+        .position(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.flags.contains(VertexFlags::RIVER))
+        .unwrap();
+    let v = &planet.mesh.vertices[land];
+    let srgb = climate_colour(params.climate, lat_lon(v.p()).0, v.ground - params.sea_level_m);
+    assert_eq!(mesh.colors[land], linear_rgba(srgb, 255));
+    // River vertices: blue in the planet model, their land's colour in a view or tile (their
+    // water is the water surface's).
+    let river = planet.mesh.vertices.iter().position(|v| v.flags.contains(VertexFlags::RIVER)).unwrap();
+    let v = &planet.mesh.vertices[river];
+    assert_eq!(mesh.colors[river], linear_rgba(RIVER_RGB, 255));
+    let srgb = climate_colour(params.climate, lat_lon(v.p()).0, v.ground - params.sea_level_m);
+    assert_eq!(terrain_mesh(&planet.mesh, &params, None).colors[river], linear_rgba(srgb, 255));
+}

@@ -2,7 +2,7 @@
 //! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
 
 use super::climate::water_colour;
-use super::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh, GlbTooLarge};
+use super::glb::{encode_glb, linear_rgba, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh, GlbTooLarge};
 use super::surface_normals;
 use super::water::{shows_water, water_levels};
 use crate::mesh::terrain::lift;
@@ -80,7 +80,7 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]], levels: &[
             .par_iter()
             .map(|&v| {
                 let [r, g, b] = water_colour((levels[v as usize] - vertices[v as usize].ground).max(0.0));
-                [r, g, b, WATER_ALPHA]
+                linear_rgba([r, g, b], WATER_ALPHA)
             })
             .collect(),
         indices,

@@ -8,8 +8,11 @@
 //! Beside the sea and lakes that level is the water's own (a flat surface). Beside a river it
 //! is set so that the shore crosses each edge from the river vertex at half the channel's width
 //! ([`crate::mesh::channels`]): a 300 m river is about 300 m wide however large the faces
-//! beside it, a river narrower than a pixel is a thin line or nothing, and a river that does
-//! not flow all year is a dry bed.
+//! beside it, and a river that does not flow all year is a dry bed. A river narrower than
+//! 1/[`EDGES_PER_WIDTH`] of the shortest edge at its vertex is not drawn at all (about a pixel
+//! at views' default 8-pixel edges): in a coarse face between several river vertices the
+//! surface would otherwise span the whole face, and a coarse tile or view would show land
+//! crossed by streams as water.
 
 use crate::mesh::{Mesh, Vertex, VertexFlags};
 use rayon::prelude::*;
@@ -40,6 +43,24 @@ fn half_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
     Some(f64::from(channels.width_at(v.p().normalize()).unwrap_or(SMALL_STREAM_M)) * 0.5)
 }
 
+/// A river shows water where its channel is at least the shortest edge at its vertex over this.
+pub const EDGES_PER_WIDTH: f64 = 8.0;
+
+/// The shortest edge (m) at each vertex among `triangles`' edges; infinite for vertices of
+/// none.
+fn shortest_edges(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
+    let mut shortest = vec![f64::INFINITY; mesh.vertices.len()];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            let len = mesh.vertices[a].p().distance(mesh.vertices[b].p());
+            shortest[a] = shortest[a].min(len);
+            shortest[b] = shortest[b].min(len);
+        }
+    }
+    shortest
+}
+
 /// Width (m) of a river vertex with no base-mesh river near it.
 pub const SMALL_STREAM_M: f32 = 2.0;
 
@@ -55,9 +76,11 @@ pub const SHALLOW_RIVER_M: f64 = 1.0;
 pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     let vertices = &mesh.vertices;
     let half: Vec<Option<f64>> = vertices.par_iter().map(|v| half_width(mesh, v)).collect();
+    let shortest = shortest_edges(mesh, triangles);
     // A flowing river's vertex carries its channel's water, SHALLOW_RIVER_M deep where the
-    // mesh gives it none; a dry bed carries none.
-    let wet = |v: usize| (vertices[v].submerged() || half[v].is_some()) && half[v] != Some(0.0);
+    // mesh gives it none; a dry bed carries none, nor a river too narrow for the faces at it.
+    let shown = |v: usize| half[v].is_none_or(|h| h > 0.0 && 2.0 * h * EDGES_PER_WIDTH >= shortest[v]);
+    let wet = |v: usize| (vertices[v].submerged() || half[v].is_some()) && shown(v);
     let own = |v: usize| {
         let vert = &vertices[v];
         if half[v].is_some() && !vert.submerged() {
@@ -189,6 +212,12 @@ mod tests {
         // A river with no depth in the mesh still carries water.
         let (shallow, tris) = channel(50.0, 0.0);
         assert_eq!(water_levels(&shallow, &tris)[0], 7.0 + SHALLOW_RIVER_M);
+        // A river narrower than an eighth of the shortest edge at it (10 m against 100 m) is
+        // not drawn: the face shows land, as a coarse tile or view should.
+        let (narrow, tris) = channel(10.0, 3.0);
+        let level = water_levels(&narrow, &tris);
+        assert_eq!(level, vec![7.0, 12.0, 30.0]);
+        assert!(!shows_water(&narrow, &level, &tris[0]));
         // A dry bed (a river that does not flow all year) shows no water at all.
         let (wadi, tris) = channel(0.0, 3.0);
         let level = water_levels(&wadi, &tris);

@@ -225,7 +225,8 @@ fn render(
 /// own tangent plane; 5: closed basins, lakes in `rivers.geojson`, lake beds under water; 6:
 /// splits of an elevation map planet follow the map where it resolves them; 7: rivers' water
 /// as wide as their channels, a regional elevation map's coast outside its bounds; 8: view.glb
-/// and 3D Tiles contents quantized and meshopt-compressed by default), so
+/// and 3D Tiles contents quantized and meshopt-compressed by default, their vertex colours
+/// linear as glTF defines them), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
 pub const ANSWERS_REVISION: &str = "8";
 

@@ -20,7 +20,10 @@ const stats = { tilesLoaded: 0, tileRequests: 0, pending: 0, frames: 0, planet: 
 window.viewerStats = stats;
 
 const canvas = $('view');
-const renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+// A logarithmic depth buffer: from 1 km to 100,000 km a linear one resolves only kilometres at
+// planet distance, and the water surface, which on a coarse tile's river faces runs a few metres
+// to kilometres under the ground, would show through the land.
+const renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true, logarithmicDepthBuffer: true });
 renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
 renderer.setClearColor(new Color(0x05070d));
 

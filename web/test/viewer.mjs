@@ -180,6 +180,35 @@ try {
       return img.complete && img.naturalWidth > 0 && !document.getElementById('snapshot-box').hidden;
     });
     console.log(`render.png shown (${query})`);
+    // One look: the share of the planet's pixels that look like water (blue over red and
+    // green) in the viewer's canvas and in the server's render of the same camera. A viewer
+    // whose land shows as water (sRGB colours read as linear, river vertices painted blue, a
+    // coarse face between streams covered by water) is far off the render.
+    const looks = await page.evaluate(async (b64) => {
+      const stats = async (src) => {
+        const img = new Image();
+        img.src = src;
+        await img.decode();
+        const c = new OffscreenCanvas(img.naturalWidth, img.naturalHeight);
+        const g = c.getContext('2d');
+        g.drawImage(img, 0, 0);
+        const d = g.getImageData(0, 0, c.width, c.height).data;
+        let planet = 0, water = 0;
+        for (let i = 0; i < d.length; i += 4) {
+          const [r, gr, b] = [d[i], d[i + 1], d[i + 2]];
+          if (r + gr + b < 90) continue; // space (a few stars do not count)
+          planet++;
+          if (b > r + 30 && b > gr + 10) water++;
+        }
+        return { planet, water: water / Math.max(planet, 1) };
+      };
+      return { viewer: await stats(`data:image/png;base64,${b64}`), render: await stats(document.getElementById('snapshot').src) };
+    }, png.toString('base64'));
+    console.log(`water share: viewer ${looks.viewer.water.toFixed(3)}, render ${looks.render.water.toFixed(3)}`);
+    if (looks.viewer.planet < 10000 || looks.render.planet < 10000) fail(`no planet to compare: ${JSON.stringify(looks)}`);
+    if (Math.abs(looks.viewer.water - looks.render.water) > 0.12) {
+      fail(`the viewer and render.png look apart: ${JSON.stringify(looks)}`);
+    }
   } else if (res.status() === 503) {
     await page.waitForFunction(() => document.getElementById('status').textContent.includes('no_renderer'));
     console.log('render.png: no graphics adapter here (503 no_renderer reported in the page)');
