@@ -4,6 +4,7 @@ use clap::{Parser, Subcommand};
 use riverworld::generate::{self, GenerateError, MapSource};
 use riverworld::maps::{GeoBounds, MapKind, MapLimits};
 use riverworld::params::PlanetRequest;
+use riverworld::server::defaults;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -23,7 +24,10 @@ fn budget(base: &riverworld::mesh::Mesh, asked: Option<usize>, default: usize) -
 #[command(
     name = "riverworld",
     version,
-    about = "Procedural planets with realistic river networks (Derzapf et al. 2011)"
+    about = "Procedural planets with realistic river networks (Derzapf et al. 2011)",
+    after_help = "Exit status: 0 done; 2 input refused, named on stderr (flags, maps, cameras, \
+                  budgets; nothing written); 1 a failure while running (writing the output, the \
+                  GPU or graphics adapter, the network)."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -198,40 +202,40 @@ enum Command {
 #[derive(clap::Args, Clone, Debug)]
 struct ServeArgs {
     /// Address to listen on.
-    #[arg(long, default_value = "127.0.0.1:8080")]
+    #[arg(long, default_value = defaults::ADDR)]
     addr: std::net::SocketAddr,
     /// Directory that stores the planets' inputs (request.json and map.bin per planet).
-    #[arg(long, default_value = "data")]
+    #[arg(long, default_value = defaults::DATA_DIR)]
     data: PathBuf,
     /// Store URL instead of --data: file:///DIR, or s3://BUCKET/PREFIX in a build with
     /// `--features s3` (credentials and region from the AWS_* environment variables).
     #[arg(long)]
     store: Option<String>,
     /// Build jobs that may wait for a worker; more answer 429.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = defaults::MAX_QUEUE)]
     max_queue: usize,
     /// Build worker threads.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
+    #[arg(long, default_value_t = defaults::WORKERS, value_parser = clap::value_parser!(u32).range(1..=256))]
     workers: u32,
     /// Builds of planets one client address may have queued or running; more answer 429
     /// client_queue_full (0: no limit).
-    #[arg(long, default_value_t = 2)]
+    #[arg(long, default_value_t = defaults::MAX_BUILDS_PER_CLIENT)]
     max_builds_per_client: usize,
     /// Take the client's address for --max-builds-per-client from the last X-Forwarded-For
     /// entry: only behind a proxy that sets it (HAProxy `option forwardfor`).
     #[arg(long)]
     trust_forwarded_for: bool,
     /// In-memory cache of built planets and rendered files, MiB.
-    #[arg(long, default_value_t = 512)]
+    #[arg(long, default_value_t = defaults::CACHE_MB)]
     cache_mb: usize,
     /// Largest request body (a map upload), MiB.
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    #[arg(long, default_value_t = defaults::BODY_LIMIT_MB, value_parser = clap::value_parser!(u32).range(1..=4096))]
     body_limit_mb: u32,
     /// Allowed CORS origins: * or a comma-separated list.
-    #[arg(long, default_value = "*")]
+    #[arg(long, default_value = defaults::CORS_ORIGIN)]
     cors_origin: String,
     /// Largest max_faces a view.glb request may ask for (at most 2^30).
-    #[arg(long, default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
+    #[arg(long, default_value_t = defaults::MAX_FACES_CAP, value_parser = clap::value_parser!(u64).range(1..=MAX_MESH_FACES))]
     max_faces_cap: u64,
     /// Most faces the base mesh of a planet created by POST may have, estimated from its
     /// base_faces and its map's size before it is accepted (kept within --max-faces-cap).
@@ -239,7 +243,7 @@ struct ServeArgs {
           value_parser = clap::value_parser!(u64).range(8..=MAX_MESH_FACES))]
     max_planet_faces: u64,
     /// Seconds before a request is answered 503 timeout.
-    #[arg(long, default_value_t = 120, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, default_value_t = defaults::TIMEOUT_S, value_parser = clap::value_parser!(u64).range(1..))]
     timeout_s: u64,
     /// Do not serve the built-in planet earth.
     #[arg(long)]
@@ -260,13 +264,14 @@ struct ServeArgs {
           value_parser = clap::value_parser!(u32).range(1..))]
     render_memory_mb: u32,
     /// Renders that may wait for a permit; more answer 429 busy.
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = defaults::RENDER_QUEUE)]
     render_queue: usize,
     /// Widest raster (landmask.png, preview.png, elevation.tif) a request may ask for.
-    #[arg(long, default_value_t = 8192, value_parser = clap::value_parser!(u32).range(2..=16384))]
+    #[arg(long, default_value_t = riverworld::server::resources::MAX_RASTER_WIDTH,
+          value_parser = clap::value_parser!(u32).range(2..=16384))]
     max_raster_width: u32,
     /// Most pixels an uploaded map may declare, in units of 2^20 pixels (checked before decoding).
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u64).range(1..=1024))]
+    #[arg(long, default_value_t = defaults::MAX_MAP_MPIXELS, value_parser = clap::value_parser!(u64).range(1..=1024))]
     max_map_mpixels: u64,
     /// Most pixels (width x height) a render.png or render.jpg may ask for.
     #[arg(long, default_value_t = riverworld::server::DEFAULT_MAX_RENDER_PIXELS,
@@ -284,33 +289,80 @@ struct ServeArgs {
     backend: riverworld::adapt::gpu::Backend,
 }
 
-fn run_serve(args: ServeArgs) -> Result<(), String> {
+/// Why a command failed, and its exit code: 2 for input it refuses (flags, files, cameras,
+/// budgets; nothing is written), 1 for a failure while running (writing the output, the GPU or
+/// graphics adapter, the network).
+#[derive(Debug)]
+enum CliError {
+    Input(String),
+    Run(String),
+}
+
+impl CliError {
+    fn code(&self) -> ExitCode {
+        match self {
+            CliError::Input(_) => ExitCode::from(2),
+            CliError::Run(_) => ExitCode::FAILURE,
+        }
+    }
+}
+
+impl std::fmt::Display for CliError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CliError::Input(m) | CliError::Run(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<GenerateError> for CliError {
+    fn from(e: GenerateError) -> Self {
+        match e {
+            GenerateError::Write { .. } => CliError::Run(e.to_string()),
+            _ => CliError::Input(e.to_string()),
+        }
+    }
+}
+
+/// Bad input, named.
+fn input(e: impl std::fmt::Display) -> CliError {
+    CliError::Input(e.to_string())
+}
+
+/// A failure while running, named.
+fn failed(e: impl std::fmt::Display) -> CliError {
+    CliError::Run(e.to_string())
+}
+
+/// The adaption backend `--backend` asks for, or why it is not here (a failure of this machine,
+/// with the way out).
+fn select_backend(
+    backend: riverworld::adapt::gpu::Backend,
+) -> Result<(Option<std::sync::Arc<riverworld::adapt::gpu::GpuAdaption>>, String), CliError> {
+    riverworld::adapt::gpu::select(backend)
+        .map_err(|e| failed(format!("--backend gpu: {e}; --backend cpu (or auto) adapts on the CPU, the same bytes")))
+}
+
+/// The server's configuration from `serve`'s flags (and RIVERWORLD_API_TOKEN).
+fn serve_config(args: &ServeArgs) -> Result<riverworld::server::Config, CliError> {
     use riverworld::server;
-    tracing_subscriber::fmt()
-        .with_env_filter(
-            tracing_subscriber::EnvFilter::try_from_default_env()
-                .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info")),
-        )
-        .with_writer(std::io::stderr)
-        .with_ansi(std::io::stderr().is_terminal())
-        .init();
-    let config = server::Config {
-        data_dir: args.data,
-        store_url: args.store,
+    Ok(server::Config {
+        data_dir: args.data.clone(),
+        store_url: args.store.clone(),
         max_queue: args.max_queue,
         workers: args.workers as usize,
         max_builds_per_client: args.max_builds_per_client,
         trust_forwarded_for: args.trust_forwarded_for,
         cache_bytes: args.cache_mb.saturating_mul(1 << 20),
         body_limit: args.body_limit_mb as usize * (1 << 20),
-        cors_origin: args.cors_origin,
+        cors_origin: args.cors_origin.clone(),
         max_faces_cap: args.max_faces_cap as usize,
         max_planet_faces: args.max_planet_faces as usize,
         request_timeout: std::time::Duration::from_secs(args.timeout_s),
         default_planet: !args.no_default_planet,
         build_delay: std::time::Duration::ZERO,
-        api_token: match args.api_token.or_else(|| std::env::var("RIVERWORLD_API_TOKEN").ok()) {
-            Some(token) => Some(server::auth::ApiToken::new(&token)?),
+        api_token: match args.api_token.clone().or_else(|| std::env::var("RIVERWORLD_API_TOKEN").ok()) {
+            Some(token) => Some(server::auth::ApiToken::new(&token).map_err(input)?),
             None => None,
         },
         render_permits: args.render_permits,
@@ -322,17 +374,30 @@ fn run_serve(args: ServeArgs) -> Result<(), String> {
         max_dem_pixels: args.max_dem_pixels,
         render_delay: std::time::Duration::ZERO,
         adapt_backend: args.backend,
-    };
-    let runtime = tokio::runtime::Runtime::new().map_err(|e| format!("cannot start the runtime: {e}"))?;
+    })
+}
+
+fn run_serve(args: ServeArgs) -> Result<(), CliError> {
+    use riverworld::server;
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info")),
+        )
+        .with_writer(std::io::stderr)
+        .with_ansi(std::io::stderr().is_terminal())
+        .init();
+    let config = serve_config(&args)?;
+    let runtime = tokio::runtime::Runtime::new().map_err(|e| failed(format!("cannot start the runtime: {e}")))?;
     runtime.block_on(async move {
         let listener = tokio::net::TcpListener::bind(args.addr)
             .await
-            .map_err(|e| format!("cannot listen on {}: {e}", args.addr))?;
-        let server = server::serve(config, listener).await?;
+            .map_err(|e| failed(format!("cannot listen on {}: {e}", args.addr)))?;
+        let server = server::serve(config, listener).await.map_err(failed)?;
         eprintln!("riverworld: serving on http://{}", server.local_addr());
         let _ = tokio::signal::ctrl_c().await;
         eprintln!("riverworld: shutting down");
-        server.shutdown().await.map_err(|e| e.to_string())
+        server.shutdown().await.map_err(failed)
     })
 }
 
@@ -427,20 +492,20 @@ fn run_view(
     stats: bool,
     compression: riverworld::export::glb::Compression,
     backend: riverworld::adapt::gpu::Backend,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     let file_name = out_file_name(out)?;
-    let spec = planet.spec().map_err(|e| e.to_string())?;
+    let spec = planet.spec()?;
     let radius = spec.params.radius_m;
     let cams = cameras
         .iter()
         .map(|q| {
-            let (cam, rest) = riverworld::adapt::Camera::parse_query(q, radius).map_err(|e| e.to_string())?;
+            let (cam, rest) = riverworld::adapt::Camera::parse_query(q, radius).map_err(input)?;
             refuse_other_keys(&rest).map(|()| cam)
         })
-        .collect::<Result<Vec<_>, String>>()?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    let max_faces = budget(&built.mesh, max_faces, VIEW_FACES)?;
-    let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
+        .collect::<Result<Vec<_>, CliError>>()?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let max_faces = budget(&built.mesh, max_faces, VIEW_FACES).map_err(input)?;
+    let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
     let on_gpu = gpu.is_some();
     let mut adapter = riverworld::adapt::Adapter::new(built.mesh, spec.params.clone()).with_gpu(gpu);
@@ -454,9 +519,8 @@ fn run_view(
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
     let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin, compression)
-        .map_err(|e| format!("--max-faces: {e}: ask for fewer faces"))?;
-    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| input(format!("--max-faces: {e}: ask for fewer faces")))?;
+    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])?;
     if stats {
         println!("{}", serde_json::to_string_pretty(&last).expect("stats serialise"));
     }
@@ -465,10 +529,10 @@ fn run_view(
 
 /// Refuses the keys of a `--camera` query that the camera did not take: the budget is a flag
 /// on the command line (`max_faces` joins the query only over HTTP), anything else unknown.
-fn refuse_other_keys(rest: &[(String, String)]) -> Result<(), String> {
+fn refuse_other_keys(rest: &[(String, String)]) -> Result<(), CliError> {
     match rest.first() {
-        Some((k, _)) if k == "max_faces" => Err("max_faces is not a camera parameter here: use --max-faces".into()),
-        Some((k, _)) => Err(format!("unknown camera parameter {k:?}")),
+        Some((k, _)) if k == "max_faces" => Err(input("max_faces is not a camera parameter here: use --max-faces")),
+        Some((k, _)) => Err(input(format!("unknown camera parameter {k:?}"))),
         None => Ok(()),
     }
 }
@@ -480,33 +544,31 @@ fn run_render(
     format: Option<riverworld::render::ImageFormat>,
     out: &std::path::Path,
     backend: riverworld::adapt::gpu::Backend,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     use riverworld::render::{self, ImageFormat, Shot};
     let file_name = out_file_name(out)?;
-    let spec = planet.spec().map_err(|e| e.to_string())?;
-    let (shot, rest) = Shot::parse_query(camera, spec.params.radius_m).map_err(|e| e.to_string())?;
+    let spec = planet.spec()?;
+    let (shot, rest) = Shot::parse_query(camera, spec.params.radius_m).map_err(input)?;
     refuse_other_keys(&rest)?;
     let format = format.unwrap_or_else(|| match out.extension().and_then(|e| e.to_str()) {
         Some(e) if e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg") => ImageFormat::Jpeg,
         _ => ImageFormat::Png,
     });
-    let renderer = render::shared().map_err(|e| e.to_string())?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    let max_faces = budget(&built.mesh, max_faces, RENDER_FACES)?;
-    let (gpu, choice) = riverworld::adapt::gpu::select(backend).map_err(|e| format!("--backend gpu: {e}"))?;
+    let renderer = render::shared().map_err(failed)?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let max_faces = budget(&built.mesh, max_faces, RENDER_FACES).map_err(input)?;
+    let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
-    let pixels =
-        render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(|e| e.to_string())?;
+    let pixels = render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(failed)?;
     let bytes = render::encode(&pixels, shot.camera.width, shot.camera.height, format);
-    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, bytes)])
-        .map_err(|e| e.to_string())
+    Ok(generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, bytes)])?)
 }
 
 /// The file name that `--out` ends in (refused where it names none: `..`, `/`).
-fn out_file_name(out: &std::path::Path) -> Result<&str, String> {
+fn out_file_name(out: &std::path::Path) -> Result<&str, CliError> {
     match out.file_name() {
-        Some(n) => n.to_str().ok_or_else(|| format!("--out {}: the file name is not UTF-8", out.display())),
-        None => Err(format!("--out {}: names no file", out.display())),
+        Some(n) => n.to_str().ok_or_else(|| input(format!("--out {}: the file name is not UTF-8", out.display()))),
+        None => Err(input(format!("--out {}: names no file", out.display()))),
     }
 }
 
@@ -516,14 +578,14 @@ fn run_tiles(
     levels: u8,
     format: &str,
     compression: riverworld::export::glb::Compression,
-) -> Result<(), String> {
+) -> Result<(), CliError> {
     use riverworld::export::{terrain_rgb::Encoding, tile_sets};
-    let spec = planet.spec().map_err(|e| e.to_string())?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(|e| e.to_string())?;
-    let tiles = riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone())
-        .map_err(|e| e.to_string())?;
+    let spec = planet.spec()?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let tiles =
+        riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()).map_err(failed)?;
     let name = format!("seed {}", spec.seed);
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
+    std::fs::create_dir_all(out).map_err(|e| failed(format!("cannot write to {}: {e}", out.display())))?;
     let stats = match format {
         "quantized-mesh" => tile_sets::write_quantized_mesh(&tiles, out, levels, &name),
         "terrarium" => tile_sets::write_terrarium(&tiles, out, levels, &name, Encoding::Terrarium),
@@ -531,101 +593,84 @@ fn run_tiles(
         "mvt" => tile_sets::write_mvt(&tiles, out, levels, &name),
         _ => tiles.write_files(out, levels, compression),
     }
-    .map_err(|e| format!("cannot write to {}: {e}", out.display()))?;
+    .map_err(|e| failed(format!("cannot write to {}: {e}", out.display())))?;
     println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
     Ok(())
 }
 
-/// `riverworld dem`: exit code 2 for bad input, 1 when the file cannot be written.
-fn run_dem(planet: &PlanetArgs, bbox: &str, width: u32, height: Option<u32>, out: &std::path::Path) -> ExitCode {
+/// `riverworld dem`.
+fn run_dem(
+    planet: &PlanetArgs,
+    bbox: &str,
+    width: u32,
+    height: Option<u32>,
+    out: &std::path::Path,
+) -> Result<(), CliError> {
     use riverworld::export::dem::{dem_tiff, DemRequest, DEFAULT_MAX_DEM_PIXELS};
-    let fail = |code: u8, e: String| {
-        eprintln!("error: {e}");
-        ExitCode::from(code)
-    };
-    let req = match DemRequest::new(bbox, width, height, DEFAULT_MAX_DEM_PIXELS) {
-        Ok(r) => r,
-        Err(e) => return fail(2, format!("--{e}")),
-    };
-    let spec = match planet.spec() {
-        Ok(s) => s,
-        Err(e) => return fail(2, e.to_string()),
-    };
-    let built = match generate::build(&spec, &mut |_, _| {}) {
-        Ok(b) => b,
-        Err(e) => return fail(2, e.to_string()),
-    };
-    let tiles = match riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()) {
-        Ok(t) => t,
-        Err(e) => return fail(1, e.to_string()),
-    };
+    let req = DemRequest::new(bbox, width, height, DEFAULT_MAX_DEM_PIXELS).map_err(|e| input(format!("--{e}")))?;
+    let spec = planet.spec()?;
+    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let tiles =
+        riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()).map_err(failed)?;
     let t0 = std::time::Instant::now();
     let dem = tiles.dem(&req);
     let sampled_ms = t0.elapsed().as_secs_f64() * 1e3;
     let bytes = dem_tiff(&dem);
     let total_ms = t0.elapsed().as_secs_f64() * 1e3;
-    if let Err(e) = std::fs::write(out, &bytes) {
-        return fail(1, format!("cannot write {}: {e}", out.display()));
-    }
+    std::fs::write(out, &bytes).map_err(|e| failed(format!("cannot write {}: {e}", out.display())))?;
     let stats = serde_json::json!({
         "out": out.display().to_string(), "query": req.to_query(), "width": req.width, "height": req.height,
         "splits": dem.splits, "bytes": bytes.len(), "sample_ms": sampled_ms.round(), "total_ms": total_ms.round(),
     });
     println!("{}", serde_json::to_string_pretty(&stats).expect("stats serialise"));
-    ExitCode::SUCCESS
+    Ok(())
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match cli.command {
-        Command::Generate { planet, out, raster_width } => match run_generate(&planet, &out, raster_width) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                match e {
-                    GenerateError::Write { .. } => ExitCode::FAILURE,
-                    _ => ExitCode::from(2),
-                }
-            }
-        },
+    let done = match cli.command {
+        Command::Generate { planet, out, raster_width } => {
+            run_generate(&planet, &out, raster_width).map_err(CliError::from)
+        }
         Command::Render { planet, camera, max_faces, format, out, backend } => {
-            match run_render(&planet, &camera, max_faces.map(|n| n as usize), format, &out, backend) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(2)
-                }
-            }
+            run_render(&planet, &camera, max_faces.map(|n| n as usize), format, &out, backend)
         }
         Command::View { planet, cameras, max_faces, out, stats, compression, backend } => {
-            match run_view(&planet, &cameras, max_faces.map(|n| n as usize), &out, stats, compression, backend) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(2)
-                }
-            }
+            run_view(&planet, &cameras, max_faces.map(|n| n as usize), &out, stats, compression, backend)
         }
         Command::Tiles { planet, out, levels, format, compression } => {
-            match run_tiles(&planet, &out, levels, &format, compression) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(2)
-                }
-            }
+            run_tiles(&planet, &out, levels, &format, compression)
         }
         Command::Dem { planet, bbox, width, height, out } => run_dem(&planet, &bbox, width, height, &out),
-        Command::Serve(args) => match run_serve(args) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(2)
-            }
-        },
+        Command::Serve(args) => run_serve(args),
         Command::Bench { maps, runs, quick, only } => {
             riverworld::bench::run(&maps, runs.max(1), quick, &only);
-            ExitCode::SUCCESS
+            Ok(())
         }
+    };
+    match done {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.code()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `serve` without options runs with `Config::default()`: the defaults are written once.
+    #[test]
+    fn serve_without_options_is_the_default_config() {
+        let Command::Serve(args) = Cli::try_parse_from(["riverworld", "serve"]).unwrap().command else {
+            panic!("serve parses as serve");
+        };
+        if std::env::var_os("RIVERWORLD_API_TOKEN").is_none() {
+            let config = serve_config(&args).unwrap();
+            assert_eq!(format!("{config:?}"), format!("{:?}", riverworld::server::Config::default()));
+        }
+        assert_eq!(args.addr.to_string(), defaults::ADDR);
     }
 }

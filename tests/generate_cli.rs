@@ -425,3 +425,31 @@ fn dem_writes_a_region_and_refuses_bad_grids() {
         assert!(String::from_utf8_lossy(&o.stderr).contains(what), "{}", String::from_utf8_lossy(&o.stderr));
     }
 }
+
+/// One exit-code rule for every command: 2 for input it refuses, 1 for a failure while running
+/// (here: an output path under a regular file), the reason on stderr either way.
+#[test]
+fn write_failures_exit_1_and_bad_input_2() {
+    let dir = scratch("exit-codes");
+    let blocker = dir.join("file");
+    std::fs::write(&blocker, b"not a directory").unwrap();
+    let under = |name: &str| blocker.join(name).to_str().unwrap().to_string();
+    let cam = "eye=6500000,0,400000&target=6374000,0,300000&width=64&height=48";
+    for args in [
+        vec!["generate", "--faces", "200", "--out", &under("planet")],
+        vec!["view", "--faces", "200", "--camera", cam, "--backend", "cpu", "--out", &under("v.glb")],
+        vec!["tiles", "--faces", "200", "--levels", "1", "--out", &under("tiles")],
+        vec!["dem", "--faces", "200", "--bbox=5,44,11,47", "--width", "20", "--out", &under("d.tif")],
+    ] {
+        let o = run(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+        assert!(err.contains("error:") && err.contains("file"), "{args:?}: {err}");
+    }
+    // The same commands with bad input: 2, and nothing written.
+    refused(&["tiles", "--faces", "2", "--out", dir.join("t").to_str().unwrap()], "base_faces");
+    refused(&["dem", "--faces", "200", "--bbox=5,44,11", "--width", "20", "--out", &under("d.tif")], "bbox");
+    assert!(!dir.join("t").exists());
+    let help = String::from_utf8(run(&["--help"]).stdout).unwrap();
+    assert!(help.contains("Exit status: 0 done; 2 input refused"), "{help}");
+}

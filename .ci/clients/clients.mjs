@@ -120,9 +120,10 @@ map.on('idle', () => { window.idle = true; });
     tileset.tileFailed.addEventListener((e) => window.errors.push('tile: ' + e.url + ': ' + e.message));
     tileset.tileLoad.addEventListener(() => { window.loads += 1; });
     viewer.scene.primitives.add(tileset);
-    // 20 km over the southern Himalaya, looking north: level 8 and finer near the camera.
-    viewer.camera.setView({ destination: Cesium.Cartesian3.fromDegrees(86.9, 27.2, 20000),
-      orientation: { heading: 0, pitch: Cesium.Math.toRadians(-35), roll: 0 } });
+    // 20 km over the Ligurian coast at Genoa, looking south-east along it over the sea and the
+    // Apennines to the horizon: level 8 and finer near the camera.
+    viewer.camera.setView({ destination: Cesium.Cartesian3.fromDegrees(8.6, 44.6, 20000),
+      orientation: { heading: Cesium.Math.toRadians(120), pitch: Cesium.Math.toRadians(-20), roll: 0 } });
     window.viewer = viewer;
     window.tileset = tileset;
   } catch (e) {

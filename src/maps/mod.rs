@@ -75,6 +75,9 @@ impl FromStr for MapKind {
     }
 }
 
+/// Default most pixels a map may declare (`MapLimits::default`, `serve --max-map-mpixels`).
+pub const DEFAULT_MAX_MAP_PIXELS: u64 = 64 << 20;
+
 /// Resource limits for decoding one map.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MapLimits {
@@ -87,7 +90,7 @@ pub struct MapLimits {
 impl Default for MapLimits {
     /// 64 Mpixel (e.g. 16384x4096) and 64 MiB.
     fn default() -> MapLimits {
-        MapLimits { max_pixels: 64 << 20, max_bytes: 64 << 20 }
+        MapLimits { max_pixels: DEFAULT_MAX_MAP_PIXELS, max_bytes: 64 << 20 }
     }
 }
 

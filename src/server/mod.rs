@@ -60,6 +60,23 @@ pub const DEFAULT_RENDER_MEMORY_MIB: u32 = 1024;
 /// Default of [`Config::max_planet_faces`].
 pub const DEFAULT_MAX_PLANET_FACES: usize = 1_000_000;
 
+/// Defaults of [`Config`] and of `riverworld serve`'s flags: one home for both.
+pub mod defaults {
+    pub const ADDR: &str = "127.0.0.1:8080";
+    pub const DATA_DIR: &str = "data";
+    pub const MAX_QUEUE: usize = 8;
+    pub const WORKERS: u32 = 1;
+    pub const MAX_BUILDS_PER_CLIENT: usize = 2;
+    pub const CACHE_MB: usize = 512;
+    pub const BODY_LIMIT_MB: u32 = 64;
+    pub const CORS_ORIGIN: &str = "*";
+    pub const MAX_FACES_CAP: u64 = 2_000_000;
+    pub const TIMEOUT_S: u64 = 120;
+    pub const RENDER_QUEUE: usize = 16;
+    /// Most pixels of an uploaded map, in units of 2^20.
+    pub const MAX_MAP_MPIXELS: u64 = crate::maps::DEFAULT_MAX_MAP_PIXELS >> 20;
+}
+
 /// How the server runs; `Default` matches `riverworld serve` without options.
 #[derive(Clone, Debug)]
 pub struct Config {
@@ -121,26 +138,26 @@ pub struct Config {
 impl Default for Config {
     fn default() -> Config {
         Config {
-            data_dir: PathBuf::from("data"),
+            data_dir: PathBuf::from(defaults::DATA_DIR),
             store_url: None,
-            max_queue: 8,
-            workers: 1,
-            max_builds_per_client: 2,
+            max_queue: defaults::MAX_QUEUE,
+            workers: defaults::WORKERS as usize,
+            max_builds_per_client: defaults::MAX_BUILDS_PER_CLIENT,
             trust_forwarded_for: false,
-            cache_bytes: 512 << 20,
-            body_limit: 64 << 20,
-            cors_origin: "*".into(),
-            max_faces_cap: 2_000_000,
+            cache_bytes: defaults::CACHE_MB << 20,
+            body_limit: (defaults::BODY_LIMIT_MB as usize) << 20,
+            cors_origin: defaults::CORS_ORIGIN.into(),
+            max_faces_cap: defaults::MAX_FACES_CAP as usize,
             max_planet_faces: DEFAULT_MAX_PLANET_FACES,
-            request_timeout: Duration::from_secs(120),
+            request_timeout: Duration::from_secs(defaults::TIMEOUT_S),
             default_planet: true,
             build_delay: Duration::ZERO,
             api_token: None,
             render_permits: 0,
             render_memory_mib: DEFAULT_RENDER_MEMORY_MIB,
-            render_queue: 16,
+            render_queue: defaults::RENDER_QUEUE,
             max_raster_width: resources::MAX_RASTER_WIDTH,
-            max_map_pixels: crate::maps::MapLimits::default().max_pixels,
+            max_map_pixels: defaults::MAX_MAP_MPIXELS << 20,
             max_render_pixels: DEFAULT_MAX_RENDER_PIXELS,
             max_dem_pixels: crate::export::dem::DEFAULT_MAX_DEM_PIXELS,
             render_delay: Duration::ZERO,
