@@ -2,11 +2,18 @@
 //! latency and bytes per level (tiles nobody asked for before, one at a time), then cached
 //! tiles — a few hundred tiles of levels 0 to 6, as a viewer would fetch them — with
 //! `connections` concurrent connections: as fast as they go, then paced at 5,000 requests/s
-//! (latency counted from when each request was due, so a stalled server is not hidden).
+//! (latency counted from when each request was due, so a stalled server is not hidden). Then
+//! the GIS tiles the same way: Cesium terrain, MapLibre elevation PNGs and river vector tiles,
+//! cold latency per kind and zoom, then cached.
 
 use super::{gather, get, load, row, send, warm, Outcome, Req, Server};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
+
+/// The head of a table of load phases.
+const HEADER: &str =
+    "| load | requests | req/s | MiB/s | p50 ms | p99 ms | max ms | 5xx | other non-2xx | peak RSS MiB |\n\
+                      |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
 
 /// Offered rate of the paced phase, requests per second.
 const PACED_RATE: f64 = 5000.0;
@@ -62,14 +69,78 @@ pub async fn run(server: &Server, connections: usize, secs: f64) {
     for req in &mix {
         warm(&client, base, req).await;
     }
-    let header =
-        "| load | requests | req/s | MiB/s | p50 ms | p99 ms | max ms | 5xx | other non-2xx | peak RSS MiB |\n\
-                  |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
-    println!("\n{connections} connections\n\n{header}");
+    println!("\n{connections} connections\n\n{HEADER}");
     let o = load(base, connections, secs, &mix).await;
     println!("{}", row(&format!("cached tiles ({} files), {secs:.0} s", mix.len()), &o, server.peak_rss_mib()));
     let o = paced(base, connections, PACED_RATE, secs, &mix).await;
     let name = format!("cached tiles paced at {PACED_RATE:.0}/s, {secs:.0} s");
+    println!("{}", row(&name, &o, server.peak_rss_mib()));
+    gis(server, connections, secs).await;
+}
+
+/// The GIS tile routes of `earth` at zoom `z`, tile `i` of a sample: (kind, request).
+fn gis_tile(kind: &str, z: u32, i: usize) -> Req {
+    // A spread of tiles over the land-rich middle latitudes, different per sample.
+    let n = 1usize << z;
+    let x = (i * 7919 + n / 3) % n;
+    let y = (n / 4 + (i * 104_729) % (n / 2).max(1)) % n;
+    match kind {
+        // Geographic TMS: 2^(z+1) x 2^z, rows from the south.
+        "terrain" => get(format!("/v1/planets/earth/terrain/{z}/{}/{}.terrain?v=1", (2 * x + 1) % (2 * n), y)),
+        "dem" => get(format!("/v1/planets/earth/dem/{z}/{x}/{y}.png")),
+        _ => get(format!("/v1/planets/earth/rivers/{z}/{x}/{y}.mvt")),
+    }
+}
+
+/// Cold latency of each GIS tile kind at a few zooms (new tiles, one at a time), then the
+/// cached mix of all of them with `connections` connections, unpaced and paced.
+async fn gis(server: &Server, connections: usize, secs: f64) {
+    let base = &server.base;
+    let client = reqwest::Client::new();
+    // The first of each kind makes what the kind shares (the face index, the river lines).
+    for kind in ["terrain", "dem", "mvt"] {
+        warm(&client, base, &gis_tile(kind, 1, 99)).await;
+    }
+    println!(
+        "
+| GIS tile | zoom | cold ms (median of {COLD_SAMPLES}) | cold ms (max) | KiB per tile |
+|---|---:|---:|---:|---:|"
+    );
+    for kind in ["terrain", "dem", "mvt"] {
+        for z in [3u32, 6, 9, 12] {
+            let mut ms = Vec::new();
+            let mut bytes = 0;
+            for s in 0..COLD_SAMPLES {
+                let t = Instant::now();
+                let (status, len) = send(&client, base, &gis_tile(kind, z, 1000 + s)).await;
+                assert_eq!(status, 200, "{kind} zoom {z}");
+                ms.push(t.elapsed().as_secs_f64() * 1000.0);
+                bytes += len;
+            }
+            ms.sort_by(f64::total_cmp);
+            let kib = bytes as f64 / COLD_SAMPLES as f64 / 1024.0;
+            println!("| {kind} | {z} | {:.1} | {:.1} | {kib:.1} |", ms[COLD_SAMPLES / 2], ms[COLD_SAMPLES - 1]);
+        }
+    }
+    // What a map streams: tiles of each kind over zooms 2-8.
+    let mut mix = vec![
+        get("/v1/planets/earth/terrain/layer.json"),
+        get("/v1/planets/earth/dem/tilejson.json"),
+        get("/v1/planets/earth/rivers/tilejson.json"),
+    ];
+    for z in 2..=8u32 {
+        for i in 0..8 {
+            mix.extend(["terrain", "dem", "mvt"].map(|kind| gis_tile(kind, z, i)));
+        }
+    }
+    for req in &mix {
+        warm(&client, base, req).await;
+    }
+    println!("\n{connections} connections\n\n{HEADER}");
+    let o = load(base, connections, secs, &mix).await;
+    println!("{}", row(&format!("cached GIS tiles ({} files), {secs:.0} s", mix.len()), &o, server.peak_rss_mib()));
+    let o = paced(base, connections, PACED_RATE, secs, &mix).await;
+    let name = format!("cached GIS tiles paced at {PACED_RATE:.0}/s, {secs:.0} s");
     println!("{}", row(&name, &o, server.peak_rss_mib()));
 }
 
