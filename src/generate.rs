@@ -82,7 +82,7 @@ pub fn outputs(
         ("rivers.geojson", export::geojson::rivers_geojson(planet, p).into_bytes()),
         ("landmask.png", export::raster::landmask_png(&planet.mesh, w, h)),
         ("elevation.tif", export::raster::elevation_tiff(&planet.mesh, p, w, h)),
-        ("preview.png", export::raster::preview_png(&planet.mesh, &planet.rivers, p, w, h)),
+        ("preview.png", export::preview::preview_png(&planet.mesh, &planet.rivers, p, w, h)),
         ("stats.json", stats),
     ])
 }

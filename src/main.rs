@@ -613,7 +613,7 @@ fn run_dem(
     let tiles =
         riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()).map_err(failed)?;
     let t0 = std::time::Instant::now();
-    let dem = tiles.dem(&req);
+    let dem = riverworld::export::dem::sample_dem(&tiles, &req);
     let sampled_ms = t0.elapsed().as_secs_f64() * 1e3;
     let bytes = dem_tiff(&dem);
     let total_ms = t0.elapsed().as_secs_f64() * 1e3;

@@ -606,7 +606,7 @@ impl Adapter {
             lap(&mut t, &mut stats.stage_ms.split);
             let mut collapses = 0;
             if !refine_only && (look_for_collapses || splits == 0) {
-                let demanded = state::demanded(&self.mesh, &wants);
+                let demanded = split::demanded(&self.mesh, &wants);
                 let mut sites = state::collapse_candidates(&self.mesh, view, &demanded, apexes.as_deref());
                 if sites.is_empty() && splits == 0 && apexes.is_some() {
                     // Convergence is only declared after a look at every vertex.

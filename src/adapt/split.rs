@@ -92,6 +92,13 @@ pub fn chain_flags(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
     reached.into_par_iter().zip(wants).map(|(r, &w)| w || r.into_inner()).collect()
 }
 
+/// Edges that must be split for the wanted ones to be: the wanted edges and every refinement
+/// edge on their blocking chains ([`chain_flags`]). A vertex whose faces hold such an edge must
+/// not collapse, or a forced split would be undone as soon as it is made.
+pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
+    chain_flags(mesh, wants)
+}
+
 /// Indices of the set flags, in order. Most flags are clear after the first passes, so blocks
 /// of them are tested with one branchless OR before their set ones are looked for.
 pub fn set_flags(flags: &[bool]) -> Vec<u32> {

@@ -76,15 +76,8 @@ pub fn update_after_collapses(mesh: &Mesh, view: &View, flags: &mut [bool], site
     }
 }
 
-/// Edges that must be split for the wanted ones to be: the wanted edges and every refinement
-/// edge on their blocking chains. A vertex whose faces hold such an edge must not collapse, or a
-/// forced split would be undone as soon as it is made.
-pub fn demanded(mesh: &Mesh, wants: &[bool]) -> Vec<bool> {
-    super::split::chain_flags(mesh, wants)
-}
-
 /// Vertices that may collapse now: made by a split, their four faces untouched since, no edge of
-/// those faces demanded (see [`demanded`]), and the edge they were split from no longer wanting one.
+/// those faces demanded (see [`super::split::demanded`]), and the edge they were split from no longer wanting one.
 /// Looks at the vertices `among`, or at all of them.
 pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: Option<&[u32]>) -> Vec<CollapseSite> {
     let check = |v: u32| {

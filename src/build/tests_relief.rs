@@ -537,7 +537,7 @@ fn dems_below_the_base_mesh_keep_the_maps_relief() {
     let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
     for (name, bbox, min_r) in [("Himalaya", "78,24,92,34", 0.98), ("Aleutian Trench", "-180,46,-160,56", 0.995)] {
         let req = crate::export::dem::DemRequest::new(bbox, 80, None, 1 << 24).unwrap();
-        let dem = tiles.dem(&req);
+        let dem = crate::export::dem::sample_dem(&tiles, &req);
         let want: Vec<f64> = (0..req.height)
             .flat_map(|r| (0..req.width).map(move |c| (r, c)))
             .map(|(r, c)| {
@@ -572,7 +572,7 @@ fn a_regional_map_keeps_its_heights_to_its_edges() {
     let bbox = format!("{},{},{},{}", b.west, b.south, b.east, b.north);
     let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
     let req = crate::export::dem::DemRequest::new(&bbox, 100, Some(86), 1 << 24).unwrap();
-    let dem = tiles.dem(&req);
+    let dem = crate::export::dem::sample_dem(&tiles, &req);
     let (w, h) = (req.width, req.height);
     let mut ring_errors = Vec::new();
     for r in 0..h {

@@ -20,9 +20,17 @@
 //! Written by hand: no maintained Rust crate writes COGs without linking GDAL. Tests decode the
 //! output with the `tiff` crate; CI validates it with GDAL (rasterio) and rio-cogeo.
 
-use super::raster::GEO_KEYS_EPSG_4326;
 use rayon::prelude::*;
 use std::io::Write;
+
+/// GeoKeyDirectory for EPSG:4326 (GeoTIFF 1.0): header, then (key, location, count, value).
+pub const GEO_KEYS_EPSG_4326: [u16; 20] = [
+    1, 1, 0, 4, //
+    1024, 0, 1, 2, // GTModelTypeGeoKey = ModelTypeGeographic
+    1025, 0, 1, 1, // GTRasterTypeGeoKey = RasterPixelIsArea
+    2048, 0, 1, 4326, // GeographicTypeGeoKey = EPSG:4326 (WGS 84)
+    2054, 0, 1, 9102, // GeogAngularUnitsGeoKey = degree
+];
 
 /// Tile width and height in pixels.
 pub const TILE: usize = 512;

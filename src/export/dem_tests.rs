@@ -47,9 +47,9 @@ fn requests_are_checked_field_by_field() {
 #[test]
 fn the_cog_holds_ground_and_water_bands_georeferenced() {
     let req = DemRequest::new(&coast_bbox(), 300, Some(220), DEFAULT_MAX_DEM_PIXELS).unwrap();
-    let dem = tiles().dem(&req);
+    let dem = super::sample_dem(tiles(), &req);
     let bytes = dem_tiff(&dem);
-    assert_eq!(bytes, dem_tiff(&tiles().dem(&req)), "deterministic");
+    assert_eq!(bytes, dem_tiff(&super::sample_dem(tiles(), &req)), "deterministic");
     assert_eq!(&bytes[..4], b"II*\0");
     // The file's two bands are read by GDAL in CI (`.ci/check_outputs.py`); the `tiff` crate
     // reads single-band COGs only (see `cog.rs`).
@@ -72,9 +72,9 @@ fn finer_grids_refine_and_agree_with_the_base_mesh_on_it() {
     let t = tiles();
     let bbox = coast_bbox();
     // 10° cells: coarser than the base mesh's edges (~500 km), so no split below it.
-    let coarse = t.dem(&DemRequest::new(&bbox, 4, Some(3), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let coarse = super::sample_dem(t, &DemRequest::new(&bbox, 4, Some(3), DEFAULT_MAX_DEM_PIXELS).unwrap());
     assert_eq!(coarse.splits, 0);
-    let fine = t.dem(&DemRequest::new(&bbox, 1000, Some(750), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let fine = super::sample_dem(t, &DemRequest::new(&bbox, 1000, Some(750), DEFAULT_MAX_DEM_PIXELS).unwrap());
     assert!(fine.splits > 100_000, "{}", fine.splits);
     // Cells coarser than the base mesh sample the base mesh as the elevation raster does.
     let req = coarse.request;
@@ -91,7 +91,10 @@ fn a_window_of_a_dem_is_the_dem_of_the_window() {
     // at column 300, row 170 (crossing the 256-cell block borders of the larger one).
     let t = tiles();
     let (w0, s0, e0, n0) = (-30.0, -10.0, 30.0, 30.0);
-    let big = t.dem(&DemRequest::new(&format!("{w0},{s0},{e0},{n0}"), 600, Some(400), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let big = super::sample_dem(
+        t,
+        &DemRequest::new(&format!("{w0},{s0},{e0},{n0}"), 600, Some(400), DEFAULT_MAX_DEM_PIXELS).unwrap(),
+    );
     let d = 0.1;
     let (c0, r0, cw, rh) = (300u32, 170u32, 230u32, 150u32);
     let bbox = format!(
@@ -101,7 +104,7 @@ fn a_window_of_a_dem_is_the_dem_of_the_window() {
         w0 + f64::from(c0 + cw) * d,
         n0 - f64::from(r0) * d
     );
-    let small = t.dem(&DemRequest::new(&bbox, cw, Some(rh), DEFAULT_MAX_DEM_PIXELS).unwrap());
+    let small = super::sample_dem(t, &DemRequest::new(&bbox, cw, Some(rh), DEFAULT_MAX_DEM_PIXELS).unwrap());
     let mut worst = 0f32;
     for r in 0..rh {
         for c in 0..cw {

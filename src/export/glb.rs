@@ -12,7 +12,7 @@
 
 use super::climate::{climate_colour, water_colour};
 pub use super::glb_pack::Compression;
-use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, reorder, StreamKind};
+use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, StreamKind};
 use super::surface_normals;
 use crate::build::continents::lat_lon;
 use crate::mesh::{Mesh, VertexFlags};
@@ -482,6 +482,34 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     }
     debug_assert_eq!(out.len(), total as usize);
     Ok(out)
+}
+
+/// The mesh with its triangles in vertex-cache order and its vertices in order of first use
+/// (unused ones dropped), for smaller meshopt streams.
+pub fn reorder(m: &GlbMesh) -> GlbMesh {
+    let n = m.positions.len();
+    let indices = meshopt::optimize_vertex_cache(&m.indices, n);
+    let remap = meshopt::optimize_vertex_fetch_remap(&indices, n);
+    let kept = remap.iter().filter(|&&r| r != u32::MAX).count();
+    fn apply<T: Copy + Default>(values: &[T], remap: &[u32], kept: usize) -> Vec<T> {
+        if values.is_empty() {
+            return Vec::new();
+        }
+        let mut out = vec![T::default(); kept];
+        for (v, &to) in values.iter().zip(remap) {
+            if to != u32::MAX {
+                out[to as usize] = *v;
+            }
+        }
+        out
+    }
+    GlbMesh {
+        positions: apply(&m.positions, &remap, kept),
+        normals: apply(&m.normals, &remap, kept),
+        colors: apply(&m.colors, &remap, kept),
+        indices: indices.iter().map(|&i| remap[i as usize]).collect(),
+        translation: m.translation,
+    }
 }
 
 /// Least and greatest value per axis (`none` and `all` start them: the type's greatest and

@@ -22,8 +22,6 @@
 //! fallback buffer that holds no bytes (clients without a meshopt decoder ask for
 //! `compression=none`).
 
-use super::glb::GlbMesh;
-
 /// Vertex and index data of a `.glb`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Compression {
@@ -106,34 +104,6 @@ pub fn quantize_positions(positions: &[[f32; 3]], indices: &[u32]) -> Option<Qua
         })
         .collect();
     Some(QuantizedPositions { values, centre, step })
-}
-
-/// The mesh with its triangles in vertex-cache order and its vertices in order of first use
-/// (unused ones dropped), for smaller meshopt streams.
-pub fn reorder(m: &GlbMesh) -> GlbMesh {
-    let n = m.positions.len();
-    let indices = meshopt::optimize_vertex_cache(&m.indices, n);
-    let remap = meshopt::optimize_vertex_fetch_remap(&indices, n);
-    let kept = remap.iter().filter(|&&r| r != u32::MAX).count();
-    fn apply<T: Copy + Default>(values: &[T], remap: &[u32], kept: usize) -> Vec<T> {
-        if values.is_empty() {
-            return Vec::new();
-        }
-        let mut out = vec![T::default(); kept];
-        for (v, &to) in values.iter().zip(remap) {
-            if to != u32::MAX {
-                out[to as usize] = *v;
-            }
-        }
-        out
-    }
-    GlbMesh {
-        positions: apply(&m.positions, &remap, kept),
-        normals: apply(&m.normals, &remap, kept),
-        colors: apply(&m.colors, &remap, kept),
-        indices: indices.iter().map(|&i| remap[i as usize]).collect(),
-        translation: m.translation,
-    }
 }
 
 /// Unit normals as normalized `i8` (x, y, z and a zero pad).

@@ -26,7 +26,8 @@ pub mod water;
 pub use climate::{climate_colour, climate_texture, water_colour};
 pub use geojson::rivers_geojson;
 pub use glb::{encode_glb, planet_glb, to_gltf_axes, GlbMesh};
-pub use raster::{elevation_tiff, landmask_png, preview_png, SphereRaster};
+pub use preview::preview_png;
+pub use raster::{elevation_tiff, landmask_png, SphereRaster};
 
 use crate::mesh::Mesh;
 use glam::DVec3;

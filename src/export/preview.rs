@@ -12,7 +12,7 @@
 //! Segments crossing the antimeridian are drawn the short way, wrapping around the image.
 
 use super::climate::{climate_colour, water_colour};
-use super::raster::SphereRaster;
+use super::raster::{encode_png, SphereRaster};
 use super::surface_normals;
 use crate::build::continents::lat_lon;
 use crate::build::RiverGraph;
@@ -23,16 +23,6 @@ use rayon::prelude::*;
 
 /// Slope exaggeration for hillshading.
 pub const RELIEF_EXAGGERATION: f64 = 10.0;
-
-/// Encodes a raw buffer as PNG (deterministic: no time or text chunks).
-pub(crate) fn encode_png(buf: &[u8], width: u32, height: u32, colour: image::ExtendedColorType) -> Vec<u8> {
-    use image::ImageEncoder;
-    let mut out = Vec::new();
-    image::codecs::png::PngEncoder::new(&mut out)
-        .write_image(buf, width, height, colour)
-        .expect("PNG encodes into memory");
-    out
-}
 
 /// Hillshade factor (1 on flat ground) for a surface normal at direction `d`.
 fn shade(d: DVec3, normal: DVec3, lat_deg: f64, lon_deg: f64) -> f64 {

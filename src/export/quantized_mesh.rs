@@ -163,7 +163,7 @@ fn sample(tiles: &PlanetTiles, b: &GeoBounds, mask: bool) -> (Vec<f64>, Option<W
     let m = MARGIN + 1;
     let detail =
         points(b.west - f64::from(m) * step, b.north + f64::from(m) * step, n + 2 * MARGIN, n + 2 * MARGIN, step);
-    let dems = tiles.dem_grids(&detail, &grids);
+    let dems = super::dem::sample_grids(tiles, &detail, &grids);
     let h = (0..(n * n) as usize).map(|i| top(&dems[0], i)).collect();
     let mask = dems.get(1).map(|dem| {
         let m: Vec<u8> = dem.water.iter().map(|w| if w.is_nan() { 0 } else { 255 }).collect();

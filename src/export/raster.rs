@@ -18,11 +18,9 @@
 //! on the mesh's triangles. A pixel no face claims (only possible through rounding at a vertex,
 //! or on an invalid mesh) takes the face it lies least outside of, found by a full scan.
 
-use super::preview::encode_png;
 use crate::mesh::{FaceKind, Mesh};
 use crate::params::Params;
 
-pub use super::preview::preview_png;
 pub use crate::mesh::raster::SphereRaster;
 
 /// 8-bit grayscale PNG of the land mask: 255 where the pixel's face is land, 0 where it is sea.
@@ -32,15 +30,6 @@ pub fn landmask_png(mesh: &Mesh, width: u32, height: u32) -> Vec<u8> {
         raster.faces.iter().map(|&f| if mesh.face_kind(f) == FaceKind::Land { 255 } else { 0 }).collect();
     encode_png(&buf, width, height, image::ExtendedColorType::L8)
 }
-
-/// GeoKeyDirectory for EPSG:4326 (GeoTIFF 1.0): header, then (key, location, count, value).
-pub const GEO_KEYS_EPSG_4326: [u16; 20] = [
-    1, 1, 0, 4, //
-    1024, 0, 1, 2, // GTModelTypeGeoKey = ModelTypeGeographic
-    1025, 0, 1, 1, // GTRasterTypeGeoKey = RasterPixelIsArea
-    2048, 0, 1, 4326, // GeographicTypeGeoKey = EPSG:4326 (WGS 84)
-    2054, 0, 1, 9102, // GeogAngularUnitsGeoKey = degree
-];
 
 /// Single-band float32 Cloud-Optimized GeoTIFF ([`super::cog`]) of the ground altitude in
 /// metres relative to sea level, interpolated on the mesh, georeferenced as EPSG:4326 covering
@@ -59,6 +48,16 @@ pub fn elevation_tiff(mesh: &Mesh, params: &Params, width: u32, height: u32) -> 
         pixel: [360.0 / width as f64, 180.0 / height as f64],
         nodata_nan: false,
     })
+}
+
+/// Encodes a raw buffer as PNG (deterministic: no time or text chunks).
+pub(crate) fn encode_png(buf: &[u8], width: u32, height: u32, colour: image::ExtendedColorType) -> Vec<u8> {
+    use image::ImageEncoder;
+    let mut out = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut out)
+        .write_image(buf, width, height, colour)
+        .expect("PNG encodes into memory");
+    out
 }
 
 #[cfg(test)]

@@ -95,9 +95,9 @@ pub fn tile_bounds(z: u8, x: u32, y: u32) -> Result<GeoBounds, TileError> {
 pub fn dem_tile_png(tiles: &PlanetTiles, z: u8, x: u32, y: u32, encoding: Encoding) -> Result<Vec<u8>, TileError> {
     let bounds = tile_bounds(z, x, y)?;
     let req = DemRequest { bounds, width: TILE_SIZE, height: TILE_SIZE, rows: Rows::Mercator };
-    let dem = tiles.dem(&req);
+    let dem = super::dem::sample_dem(tiles, &req);
     let rgb: Vec<u8> = dem.ground.iter().flat_map(|&h| encoding.encode(f64::from(h))).collect();
-    Ok(super::preview::encode_png(&rgb, TILE_SIZE, TILE_SIZE, image::ExtendedColorType::Rgb8))
+    Ok(super::raster::encode_png(&rgb, TILE_SIZE, TILE_SIZE, image::ExtendedColorType::Rgb8))
 }
 
 /// The tile URL template of the server's elevation tiles under `base` (ending before `/{z}`).

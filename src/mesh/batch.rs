@@ -10,7 +10,7 @@
 //! corner vertices or the end points of outer edges, which no operation of a batch changes.
 
 use super::prefetch::{prefetch, prefetch_vertex};
-use super::split::DEAD;
+use super::DEAD;
 use super::{CollapseSite, Diamond, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags, LOD_RADIUS, NONE};
 use glam::DVec3;
 use std::ptr::{addr_of, addr_of_mut};

@@ -6,7 +6,7 @@
 //! share one split level, the paper's collapse condition.
 
 use super::batch::Buffers;
-use super::split::DEAD;
+use super::DEAD;
 use super::{Mesh, VertexFlags};
 
 /// Entities of a collapsible vertex: `[e1, e2, e3, e4]`, `[f1, f2, f3, f4]`, and `(a, b, t, d)`.

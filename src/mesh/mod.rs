@@ -38,6 +38,8 @@ use glam::DVec3;
 
 /// Marks an absent index.
 pub const NONE: u32 = u32::MAX;
+/// Marks an entity removed by a collapse until the buffers are compacted.
+pub(crate) const DEAD: u32 = NONE - 1;
 
 /// One vertex (Table 3, "active vertices"): 56 bytes.
 #[repr(C)]

@@ -7,7 +7,7 @@
 //! position), the edges by their ends' new indices and the faces by their corners', which makes
 //! the order a function of the mesh alone: two paths to the same mesh compact to equal buffers.
 
-use super::split::DEAD;
+use super::DEAD;
 use super::{Mesh, NONE};
 use rayon::prelude::*;
 

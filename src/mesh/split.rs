@@ -7,7 +7,7 @@
 //! faces `f3` and `f4` take the halves at `b`.
 
 use super::batch::Buffers;
-use super::{Diamond, Edge, EdgeKind, FaceKind, Mesh, Vertex, NONE};
+use super::{Diamond, Edge, EdgeKind, FaceKind, Mesh, Vertex};
 use glam::DVec3;
 
 /// Where a split happens: the edge, its end points and the corners opposite it.
@@ -219,6 +219,3 @@ impl Mesh {
         done
     }
 }
-
-/// Marks an entity removed by a collapse until the buffers are compacted.
-pub(super) const DEAD: u32 = NONE - 1;

@@ -58,7 +58,7 @@ pub async fn dem(
     let (shared, owner) = (Arc::clone(&state), Arc::clone(&entry));
     cached(state, entry, derived, headers, move |planet| {
         let tiling = tiling(&shared, &owner, planet);
-        Ok(dem_tiff(&tiling.dem(&req)))
+        Ok(dem_tiff(&crate::export::dem::sample_dem(&tiling, &req)))
     })
     .await
 }

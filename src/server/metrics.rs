@@ -2,14 +2,14 @@
 //! latency histogram by route, build counters and cache hits and misses.
 
 use axum::body::Body;
-use axum::extract::{MatchedPath, State};
+use axum::extract::MatchedPath;
 use axum::http::Request;
 use axum::middleware::Next;
 use axum::response::Response;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::Mutex;
 use std::time::Instant;
 
 /// Upper bounds of the latency histogram buckets, seconds.
@@ -119,14 +119,16 @@ pub fn method_label(m: &axum::http::Method) -> &'static str {
     KNOWN.iter().find(|&&k| k == m.as_str()).copied().unwrap_or("other")
 }
 
-/// Middleware that counts every request under its route pattern (`unmatched` for none) and
-/// method label ([`method_label`]).
-pub async fn track(State(metrics): State<Arc<super::state::AppState>>, req: Request<Body>, next: Next) -> Response {
-    let route = req.extensions().get::<MatchedPath>().map(|p| p.as_str().to_string());
-    let route = route.unwrap_or_else(|| "unmatched".to_string());
-    let method = method_label(req.method()).to_string();
-    let start = Instant::now();
-    let res = next.run(req).await;
-    metrics.metrics.observe(&route, &method, res.status().as_u16(), start.elapsed().as_secs_f64());
-    res
+impl Metrics {
+    /// Runs a request (the rest of the middleware stack) and counts it under its route pattern
+    /// (`unmatched` for none) and method label ([`method_label`]).
+    pub async fn track(&self, req: Request<Body>, next: Next) -> Response {
+        let route = req.extensions().get::<MatchedPath>().map(|p| p.as_str().to_string());
+        let route = route.unwrap_or_else(|| "unmatched".to_string());
+        let method = method_label(req.method()).to_string();
+        let start = Instant::now();
+        let res = next.run(req).await;
+        self.observe(&route, &method, res.status().as_u16(), start.elapsed().as_secs_f64());
+        res
+    }
 }

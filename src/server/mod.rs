@@ -304,6 +304,11 @@ fn earth_entry() -> Entry {
     Entry::new(EARTH_ID.to_string(), input, Some(EARTH_MAP))
 }
 
+/// Middleware that counts every request in the server's metrics ([`metrics::Metrics::track`]).
+async fn track(State(state): State<Arc<AppState>>, req: axum::extract::Request, next: middleware::Next) -> Response {
+    state.metrics.track(req, next).await
+}
+
 /// All routes with their layers (outermost first: trace, CORS, compression, JSON errors, the
 /// request head's limits, metrics, timeout, access control, body limit).
 fn router(state: Arc<AppState>) -> Result<Router, String> {
@@ -370,7 +375,7 @@ fn router(state: Arc<AppState>) -> Result<Router, String> {
         .layer(RequestBodyLimitLayer::new(c.body_limit))
         .layer(middleware::from_fn_with_state(Arc::clone(&state), auth::require_token))
         .layer(TimeoutLayer::with_status_code(StatusCode::SERVICE_UNAVAILABLE, c.request_timeout))
-        .layer(middleware::from_fn_with_state(Arc::clone(&state), metrics::track))
+        .layer(middleware::from_fn_with_state(Arc::clone(&state), track))
         .layer(middleware::from_fn(error::head_limits))
         .layer(middleware::from_fn(error::json_errors))
         .layer(compression)

@@ -255,7 +255,7 @@ fn mesh_with_holes() -> (Mesh, usize) {
     let mut mesh = a.mesh().clone();
     let far = view(&ground(-40.0, -100.0, 1e7, 2e7, 4.0));
     let wants = state::edge_wants(&mesh, &far);
-    let sites = state::collapse_candidates(&mesh, &far, &state::demanded(&mesh, &wants), None);
+    let sites = state::collapse_candidates(&mesh, &far, &crate::adapt::split::demanded(&mesh, &wants), None);
     assert!(sites.len() > 1000, "only {} collapses", sites.len());
     // SAFETY: the sites were found on this mesh, one per vertex.
     unsafe { mesh.collapse_vertices(&sites) };

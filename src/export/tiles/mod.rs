@@ -132,21 +132,6 @@ impl PlanetTiles {
         &self.planet
     }
 
-    /// The DEM of `req` ([`crate::export::dem`]), refined along this planet's tree.
-    pub fn dem(&self, req: &crate::export::dem::DemRequest) -> crate::export::dem::Dem {
-        crate::export::dem::sample_dem(self, req)
-    }
-
-    /// Small grids sampled from one surface refined for `detail`'s cells
-    /// ([`crate::export::dem::sample_grids`]).
-    pub fn dem_grids(
-        &self,
-        detail: &crate::export::dem::DemRequest,
-        grids: &[crate::export::dem::DemRequest],
-    ) -> Vec<crate::export::dem::Dem> {
-        crate::export::dem::sample_grids(self, detail, grids)
-    }
-
     /// The rivers and lakes, cut into vector tiles by [`crate::export::vector_tiles`].
     pub fn rivers(&self) -> &crate::export::vector_tiles::RiverLines {
         self.rivers.get_or_init(|| crate::export::vector_tiles::RiverLines::new(&self.planet))
