@@ -8,7 +8,7 @@
 //! visibly, and at most [`MAX_POSITION_STEP_M`], so that a water surface standing a river's
 //! depth above the ground stays on its side of it (coarser steps scatter blue blotches over the
 //! land where the surface of a coarse face's river slopes down into the ground). So 3D Tiles
-//! contents are quantized from cells of about 120 km (level 7 on Earth), coarser ones and a
+//! contents are quantized from cells of about 40 km (level 8 on Earth), coarser ones and a
 //! view (near triangles metres across on a planet-wide mesh) keep `f32`. Normals become `i8`
 //! (error under 0.5°); colours and indices are kept as they are.
 //!
