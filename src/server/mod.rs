@@ -248,7 +248,7 @@ pub async fn serve(config: Config, listener: tokio::net::TcpListener) -> Result<
     let (adaption, choice) = tokio::task::spawn_blocking(move || crate::adapt::gpu::select(backend))
         .await
         .map_err(|e| e.to_string())?
-        .map_err(|e| format!("--backend gpu: {e}"))?;
+        .map_err(|e| format!("--backend gpu: {e}; --backend cpu (or auto) adapts on the CPU, the same bytes"))?;
     tracing::info!("{choice}");
     let state = Arc::new(AppState {
         adaption,
