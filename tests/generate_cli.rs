@@ -199,8 +199,8 @@ fn bad_input_is_refused_with_exit_code_2() {
 fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     let dir = scratch("view");
     let cam = "eye=6500000,0,400000&target=6374000,0,300000&width=320&height=180&land_px=6";
-    let run_view = |out: &Path, backend: &str| {
-        run(&[
+    let run_view = |out: &Path, backend: &str, extra: &[&str]| {
+        let mut args = vec![
             "view",
             "--faces",
             "2000",
@@ -213,10 +213,12 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
             "--stats",
             "--backend",
             backend,
-        ])
+        ];
+        args.extend_from_slice(extra);
+        run(&args)
     };
     let (a, b, g) = (dir.join("a.glb"), dir.join("b.glb"), dir.join("g.glb"));
-    let o = run_view(&a, "cpu");
+    let o = run_view(&a, "cpu", &[]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("adaption on the CPU (--backend cpu)"));
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
@@ -229,7 +231,7 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     assert!(stats["adapt_ms"].as_f64().unwrap() > 0.0, "{stats}");
     let bpv = stats["bytes_per_vertex"].as_f64().unwrap();
     assert!((100.0..200.0).contains(&bpv), "{stats}");
-    assert!(run_view(&b, "auto").status.success());
+    assert!(run_view(&b, "auto", &[]).status.success());
     let bytes = std::fs::read(&a).unwrap();
     assert_eq!(&bytes[..4], b"glTF");
     assert!(bytes == std::fs::read(&b).unwrap(), "view.glb differs between runs");
@@ -260,27 +262,13 @@ fn view_writes_a_deterministic_glb_and_refuses_bad_cameras() {
     assert_eq!(via_stats["faces"], stats["faces"]);
     // (A plain file lists the vertices and triangles in the order the mesh holds them.)
     let plain = dir.join("plain.glb");
-    let o = run(&[
-        "view",
-        "--faces",
-        "2000",
-        "--camera",
-        cam,
-        "--max-faces",
-        "100000",
-        "--out",
-        plain.to_str().unwrap(),
-        "--backend",
-        "cpu",
-        "--compression",
-        "none",
-    ]);
+    let o = run_view(&plain, "cpu", &["--compression", "none"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let plain = std::fs::read(&plain).unwrap();
     assert!(plain.len() > 2 * bytes.len(), "compressed by default: {} of {} bytes", bytes.len(), plain.len());
     assert_eq!(glb_triangles(&plain), glb_triangles(&std::fs::read(&via).unwrap()), "the mesh depends on the path");
     // The wgpu compute backend (lavapipe in CI) writes the same bytes.
-    let o = run_view(&g, "gpu");
+    let o = run_view(&g, "gpu", &[]);
     let log = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success() && log.contains("adaption on the GPU"), "{log}");
     assert!(bytes == std::fs::read(&g).unwrap(), "view.glb differs between the CPU and GPU backends");

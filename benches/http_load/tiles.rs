@@ -66,15 +66,7 @@ pub async fn run(server: &Server, connections: usize, secs: f64) {
         let count = if level < 2 { 8 * 4usize.pow(u32::from(level)) } else { 48 };
         mix.extend((0..count).map(|i| tile(&key((i % 8) as u8, level, i))));
     }
-    for req in &mix {
-        warm(&client, base, req).await;
-    }
-    println!("\n{connections} connections\n\n{HEADER}");
-    let o = load(base, connections, secs, &mix).await;
-    println!("{}", row(&format!("cached tiles ({} files), {secs:.0} s", mix.len()), &o, server.peak_rss_mib()));
-    let o = paced(base, connections, PACED_RATE, secs, &mix).await;
-    let name = format!("cached tiles paced at {PACED_RATE:.0}/s, {secs:.0} s");
-    println!("{}", row(&name, &o, server.peak_rss_mib()));
+    cached(server, connections, secs, "tiles", &mix).await;
     gis(server, connections, secs).await;
 }
 
@@ -133,14 +125,21 @@ async fn gis(server: &Server, connections: usize, secs: f64) {
             mix.extend(["terrain", "dem", "mvt"].map(|kind| gis_tile(kind, z, i)));
         }
     }
-    for req in &mix {
+    cached(server, connections, secs, "GIS tiles", &mix).await;
+}
+
+/// Warms every request of `mix`, then loads it with `connections` connections for `secs`,
+/// as fast as they go and paced at [`PACED_RATE`], a table row each.
+async fn cached(server: &Server, connections: usize, secs: f64, what: &str, mix: &[Req]) {
+    let (base, client) = (&server.base, reqwest::Client::new());
+    for req in mix {
         warm(&client, base, req).await;
     }
     println!("\n{connections} connections\n\n{HEADER}");
-    let o = load(base, connections, secs, &mix).await;
-    println!("{}", row(&format!("cached GIS tiles ({} files), {secs:.0} s", mix.len()), &o, server.peak_rss_mib()));
-    let o = paced(base, connections, PACED_RATE, secs, &mix).await;
-    let name = format!("cached GIS tiles paced at {PACED_RATE:.0}/s, {secs:.0} s");
+    let o = load(base, connections, secs, mix).await;
+    println!("{}", row(&format!("cached {what} ({} files), {secs:.0} s", mix.len()), &o, server.peak_rss_mib()));
+    let o = paced(base, connections, PACED_RATE, secs, mix).await;
+    let name = format!("cached {what} paced at {PACED_RATE:.0}/s, {secs:.0} s");
     println!("{}", row(&name, &o, server.peak_rss_mib()));
 }
 
