@@ -1,7 +1,10 @@
 //! The `riverworld` command line.
 
 use clap::{Parser, Subcommand};
-use riverworld::generate::{self, GenerateError, MapSource};
+mod cli;
+
+use cli::files::{self, WriteError};
+use riverworld::input::{self, InputError, MapSource};
 use riverworld::maps::{GeoBounds, MapKind, MapLimits};
 use riverworld::params::PlanetRequest;
 use riverworld::server::defaults;
@@ -194,7 +197,7 @@ enum Command {
         quick: bool,
         /// Print only these tables (repeatable) [default: all].
         #[arg(long, value_enum)]
-        only: Vec<riverworld::bench::Table>,
+        only: Vec<cli::bench::Table>,
     },
 }
 
@@ -315,12 +318,15 @@ impl std::fmt::Display for CliError {
     }
 }
 
-impl From<GenerateError> for CliError {
-    fn from(e: GenerateError) -> Self {
-        match e {
-            GenerateError::Write { .. } => CliError::Run(e.to_string()),
-            _ => CliError::Input(e.to_string()),
-        }
+impl From<InputError> for CliError {
+    fn from(e: InputError) -> Self {
+        CliError::Input(e.to_string())
+    }
+}
+
+impl From<WriteError> for CliError {
+    fn from(e: WriteError) -> Self {
+        CliError::Run(e.to_string())
     }
 }
 
@@ -416,16 +422,16 @@ fn parse_kind(s: &str) -> Result<MapKind, String> {
     s.parse().map_err(|e: riverworld::maps::MapError| e.to_string())
 }
 fn parse_range(s: &str) -> Result<(f64, f64), String> {
-    generate::parse_range(s).map_err(|e| e.to_string())
+    input::parse_range(s).map_err(|e| e.to_string())
 }
 fn parse_bounds(s: &str) -> Result<GeoBounds, String> {
     GeoBounds::parse(s).map_err(|e| e.to_string())
 }
 
 impl PlanetArgs {
-    fn spec(&self) -> Result<riverworld::build::PlanetSpec, GenerateError> {
+    fn spec(&self) -> Result<riverworld::planet::PlanetSpec, InputError> {
         let mut req = match &self.params {
-            Some(path) => generate::load_request(path)?,
+            Some(path) => input::load_request(path)?,
             None => PlanetRequest::default(),
         };
         if let Some(seed) = self.seed {
@@ -443,11 +449,11 @@ impl PlanetArgs {
                     range_m: self.map_range,
                     bounds: self.map_bounds,
                 };
-                Some(generate::load_map(&src, &MapLimits::default())?)
+                Some(input::load_map(&src, &MapLimits::default())?)
             }
             None => None,
         };
-        Ok(generate::spec(req, map))
+        Ok(input::spec(req, map))
     }
 }
 
@@ -464,7 +470,7 @@ fn progress_bar() -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
-fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -> Result<(), GenerateError> {
+fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -> Result<(), CliError> {
     let spec = planet.spec()?;
     let bar = progress_bar();
     let mut report = |stage: &str, f: f32| {
@@ -473,10 +479,10 @@ fn run_generate(planet: &PlanetArgs, out: &std::path::Path, raster_width: u32) -
             b.set_position((f * 1000.0) as u64);
         }
     };
-    let built = generate::build(&spec, &mut report)?;
+    let built = riverworld::planet::build_planet(&spec, &mut report).map_err(input)?;
     report("writing", 0.95);
-    let files = generate::outputs(&built, &spec, raster_width)?;
-    generate::write_outputs(out, &files)?;
+    let files = files::outputs(&built, &spec, raster_width).map_err(input)?;
+    files::write_outputs(out, &files)?;
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -503,7 +509,7 @@ fn run_view(
             refuse_other_keys(&rest).map(|()| cam)
         })
         .collect::<Result<Vec<_>, CliError>>()?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
     let max_faces = budget(&built.mesh, max_faces, VIEW_FACES).map_err(input)?;
     let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
@@ -520,7 +526,7 @@ fn run_view(
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
     let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin, compression)
         .map_err(|e| input(format!("--max-faces: {e}: ask for fewer faces")))?;
-    generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])?;
+    files::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])?;
     if stats {
         println!("{}", serde_json::to_string_pretty(&last).expect("stats serialise"));
     }
@@ -555,13 +561,13 @@ fn run_render(
         _ => ImageFormat::Png,
     });
     let renderer = render::shared().map_err(failed)?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
     let max_faces = budget(&built.mesh, max_faces, RENDER_FACES).map_err(input)?;
     let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
     let pixels = render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(failed)?;
     let bytes = render::encode(&pixels, shot.camera.width, shot.camera.height, format);
-    Ok(generate::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, bytes)])?)
+    Ok(files::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, bytes)])?)
 }
 
 /// The file name that `--out` ends in (refused where it names none: `..`, `/`).
@@ -581,7 +587,7 @@ fn run_tiles(
 ) -> Result<(), CliError> {
     use riverworld::export::{terrain_rgb::Encoding, tile_sets};
     let spec = planet.spec()?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
     let tiles =
         riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()).map_err(failed)?;
     let name = format!("seed {}", spec.seed);
@@ -609,7 +615,7 @@ fn run_dem(
     use riverworld::export::dem::{dem_tiff, DemRequest, DEFAULT_MAX_DEM_PIXELS};
     let req = DemRequest::new(bbox, width, height, DEFAULT_MAX_DEM_PIXELS).map_err(|e| input(format!("--{e}")))?;
     let spec = planet.spec()?;
-    let built = generate::build(&spec, &mut |_, _| {}).map_err(input)?;
+    let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
     let tiles =
         riverworld::export::tiles::PlanetTiles::new(std::sync::Arc::new(built), spec.params.clone()).map_err(failed)?;
     let t0 = std::time::Instant::now();
@@ -629,9 +635,7 @@ fn run_dem(
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let done = match cli.command {
-        Command::Generate { planet, out, raster_width } => {
-            run_generate(&planet, &out, raster_width).map_err(CliError::from)
-        }
+        Command::Generate { planet, out, raster_width } => run_generate(&planet, &out, raster_width),
         Command::Render { planet, camera, max_faces, format, out, backend } => {
             run_render(&planet, &camera, max_faces.map(|n| n as usize), format, &out, backend)
         }
@@ -644,7 +648,7 @@ fn main() -> ExitCode {
         Command::Dem { planet, bbox, width, height, out } => run_dem(&planet, &bbox, width, height, &out),
         Command::Serve(args) => run_serve(args),
         Command::Bench { maps, runs, quick, only } => {
-            riverworld::bench::run(&maps, runs.max(1), quick, &only);
+            cli::bench::run(&maps, runs.max(1), quick, &only);
             Ok(())
         }
     };

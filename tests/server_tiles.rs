@@ -4,10 +4,10 @@
 
 mod server_common;
 
-use riverworld::build::{build_planet, PlanetSpec};
 use riverworld::export::glb::Compression;
 use riverworld::export::tiles::{PlanetTiles, TileKey};
 use riverworld::params::Params;
+use riverworld::planet::{build_planet, PlanetSpec};
 use serde_json::Value;
 use server_common::*;
 use std::sync::Arc;

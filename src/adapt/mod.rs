@@ -1,7 +1,9 @@
-//! View-dependent adaption (paper §5): refine and coarsen the planet for a camera, one
-//! data-parallel stage per file — state update (`state`), edge splits (`split`), vertex
-//! collapses (`collapse`), memory management and compaction (`compact`) — repeated until the
-//! mesh no longer changes.
+//! View-dependent adaption (paper §5): refine and coarsen the planet for a camera. [`Adapter`]
+//! keeps a mesh between cameras; the adaption loop (`run.rs`) and the face budget's search
+//! (`budget.rs`) are written once over two backends, the CPU reference (`cpu/`) and the wgpu
+//! device (`gpu/`), whose stages carry the same names: state update (`state`), split-list
+//! compaction (`select`), edge splits (`split`), vertex collapses (`collapse`), memory
+//! management and compaction (`compact`), each with its shader `shaders/adapt/<stage>.wgsl`.
 //!
 //! Positions stay `f64` metres in the planet-centred frame throughout, so the 1 cm minimum edge
 //! length is far above rounding at Earth radius (an `f64` there resolves ~1 nm). Exports move the
@@ -12,13 +14,13 @@
 //! (see `camera.rs`), so adaption run to convergence gives the same mesh for a camera whatever
 //! was adapted before.
 
+mod budget;
 pub mod camera;
-pub mod collapse;
-pub mod compact;
+pub mod cpu;
+pub mod flight;
 #[cfg(feature = "gpu")]
 pub mod gpu;
-pub mod split;
-pub mod state;
+mod run;
 
 pub use camera::{Camera, CameraError, View};
 
@@ -258,23 +260,6 @@ impl Adapter {
         false
     }
 
-    /// The state update's split wishes of every edge, on the GPU backend when there is one. A
-    /// device failure (lost, out of memory, a mesh beyond its buffer limits) falls back to the
-    /// CPU for the rest of this adapter's life and says so in the log.
-    fn edge_wants(&mut self, view: &View) -> Vec<bool> {
-        #[cfg(feature = "gpu")]
-        if let Some(g) = &self.gpu {
-            match gpu::edge_wants(g, &self.mesh, view) {
-                Ok(w) => return w,
-                Err(e) => {
-                    tracing::warn!("GPU adaption failed ({e}); continuing on the CPU");
-                    self.gpu = None;
-                }
-            }
-        }
-        state::edge_wants(&self.mesh, view)
-    }
-
     pub fn mesh(&self) -> &Mesh {
         &self.mesh
     }
@@ -292,7 +277,7 @@ impl Adapter {
     pub fn adapt(&mut self, cam: &Camera, max_faces: Option<usize>) -> AdaptStats {
         let start = Instant::now();
         let mut stats = AdaptStats { lod_scale: 1.0, ..AdaptStats::default() };
-        if compact::scattered(self.mesh.faces.len(), self.ordered_faces) {
+        if cpu::compact::scattered(self.mesh.faces.len(), self.ordered_faces) {
             // Kept between cameras, the mesh is worth ordering once most of it was appended.
             let mut t = Instant::now();
             self.order();
@@ -324,174 +309,10 @@ impl Adapter {
         view
     }
 
-    /// Finds the smallest step `k` whose converged face count `F(k)` is at most `max` and
-    /// leaves that mesh; returns `k`.
-    ///
-    /// `F` falls as `k` grows (a coarser target wants a subset of the splits, and the
-    /// converged mesh is the least conforming refinement holding them), so this is a search
-    /// over a monotone function. Trials run with the budget as a face cap: refining stops as
-    /// soon as the mesh exceeds it, which proves `F(k) > max`. Coarsening (collapses) is the
-    /// slow direction, so trials start from the coarsest mesh at hand: the last mesh that
-    /// fitted (a sub-refinement of every finer target) or the base mesh.
-    ///
-    /// The search starts at the previous call's step (frame-to-frame coherence) or, on the
-    /// first call, [`PROBE_STEPS`] coarser than the plain target: a cheap first fit that finer
-    /// trials refine instead of starting over. From a fitting trial the next step comes from
-    /// the faces added to the base mesh growing with the square of the inverse target size
-    /// ([`Adapter::steps_to_fill`]), so one overshoot usually ends the search.
-    ///
-    /// Where an estimate is refuted, steps grow twofold from one trial to the next (finer from
-    /// a fitted mesh, coarser before any fits), so that even a camera whose targets fit only
-    /// ~130 steps coarser costs a dozen trials rather than a hundred. Between a step over the
-    /// budget and a fitted one, a trial that did not halve the range of steps left is followed
-    /// by a bisection, so a search where the estimate misleads (a budget the base mesh nearly
-    /// fills, where finer targets add a few faces each) still ends in a few dozen trials at most.
-    fn fit_budget(&mut self, cam: &Camera, max: usize, stats: &mut AdaptStats) -> i32 {
-        if max < self.base.faces.len() {
-            // No target fits; the base mesh is the coarsest there is.
-            self.reset_to_base();
-            stats.converged = false;
-            return MAX_STEP;
-        }
-        let steps_for = |ratio: f64| (ratio.max(1.0).sqrt().ln() / BUDGET_STEP.ln()).ceil() as i32;
-        let mut k = self.last_step.unwrap_or(PROBE_STEPS).clamp(0, MAX_STEP);
-        let mut over: i32 = -1;
-        let mut fits: Option<Fitted> = None;
-        let mut first = true;
-        // The stride of the next refuted estimate: doubled by each.
-        let mut stride = 1;
-        // The width of the range of steps left before the last trial, once there is a range.
-        let mut last_width: Option<i32> = None;
-        loop {
-            stats.trials += 1;
-            let view = self.view(cam, k);
-            // A finer trial from the fitted mesh is over the budget before it starts if the
-            // fitted mesh's wanted splits alone would exceed it (no copy needed to know);
-            // otherwise the trial starts from a copy with those wishes. (On the GPU backend the
-            // run itself checks that first, on a copy made on the device.)
-            let wishes = match fits.as_mut() {
-                Some(f) if !self.on_gpu() => Some(self.wishes_of(&mut f.mesh, &view)),
-                _ => None,
-            };
-            let hopeless = match (&fits, &wishes) {
-                (Some(f), Some(w)) => wishes_exceed(f.mesh.faces.len(), w, max),
-                _ => false,
-            };
-            let (converged, faces) = if hopeless {
-                (false, max + 1)
-            } else {
-                if !first {
-                    match &fits {
-                        Some(f) => self.resume_from(f),
-                        None => self.reset_to_base(),
-                    }
-                }
-                // Later trials start from the base mesh or one that fitted a coarser target:
-                // both are sub-refinements of this target's mesh, so they only refine.
-                let refine_only = !first || self.fresh;
-                let converged = self.run(&view, Some(max), refine_only, wishes, stats);
-                (converged, self.face_count())
-            };
-            first = false;
-            if converged && faces <= max {
-                stats.converged = true;
-                if k == 0 || k == over + 1 {
-                    break;
-                }
-                fits = Some(self.keep_fitted(k));
-            } else {
-                over = k;
-                if k >= MAX_STEP {
-                    // Not even the coarsest target fits: a camera so close to the ground that
-                    // even 1.25^130 coarser targets want splits there. The base mesh is the
-                    // coarsest mesh there is, and no step to start the next search from.
-                    stats.converged = false;
-                    self.reset_to_base();
-                    self.last_step = None;
-                    return MAX_STEP;
-                }
-                if fits.as_ref().is_some_and(|f| f.step == over + 1) {
-                    self.restore(fits.take().expect("a fitting mesh"));
-                    k = over + 1;
-                    break;
-                }
-            }
-            k = match &fits {
-                Some(f) => {
-                    // The answer is in `over + 1 ..= f.step`: at least two steps here.
-                    let width = f.step - over;
-                    let guess = f.step - self.steps_to_fill(f.mesh.faces.len(), max);
-                    let next = if last_width.is_some_and(|w| 2 * width > w) {
-                        // The last trial did not halve the range (the estimate is off, as
-                        // where finer targets add almost nothing): bisect.
-                        over + width / 2
-                    } else if guess > over {
-                        stride = 1;
-                        guess.min(f.step - 1)
-                    } else {
-                        // The estimate is refuted (or says nothing, from the base mesh): steps
-                        // grow from the last step over the budget, up to the middle.
-                        let next = (over + stride).min(over + width / 2);
-                        stride = stride.saturating_mul(2);
-                        next
-                    };
-                    last_width = Some(width);
-                    next
-                }
-                None => {
-                    let next = k.saturating_add(steps_for(faces as f64 / max as f64).max(stride));
-                    stride = stride.saturating_mul(2);
-                    next.min(MAX_STEP)
-                }
-            };
-        }
-        self.last_step = Some(k);
-        k
-    }
-
-    /// Takes the mesh (and its device copy) as the budget search's fitted mesh of `step`.
-    fn keep_fitted(&mut self, step: i32) -> Fitted {
-        self.sync_host();
-        #[cfg(feature = "gpu")]
-        let device = self.take_device_mesh();
-        self.forget_device_mesh();
-        Fitted {
-            step,
-            mesh: std::mem::take(&mut self.mesh),
-            ordered_faces: self.ordered_faces,
-            #[cfg(feature = "gpu")]
-            device,
-        }
-    }
-
-    /// Starts a trial from a copy of the fitted mesh (and of its device copy).
-    fn resume_from(&mut self, fitted: &Fitted) {
-        self.set_mesh(fitted.mesh.clone(), fitted.ordered_faces);
-        #[cfg(feature = "gpu")]
-        self.resume_device_mesh(&fitted.device);
-    }
-
-    /// Goes back to the fitted mesh, its device copy included.
-    fn restore(&mut self, fitted: Fitted) {
-        self.set_mesh(fitted.mesh, fitted.ordered_faces);
-        #[cfg(feature = "gpu")]
-        if self.gpu.is_some() {
-            // (After a fall back to the CPU the kept device copy is dropped instead.)
-            self.resident = fitted.device;
-        }
-    }
-
-    /// Compacts the mesh during a run, keeping the order of what stays.
-    fn compact(&mut self) {
-        self.forget_device_mesh();
-        compact::compact(&mut self.mesh);
-        self.ordered_faces = self.ordered_faces.min(self.mesh.faces.len());
-    }
-
     /// Puts the mesh kept between cameras in spatial order; its device copy (equal to it between
     /// cameras) follows on the device.
     fn order(&mut self) {
-        let order = compact::order(&mut self.mesh);
+        let order = cpu::compact::order(&mut self.mesh);
         self.ordered_faces = self.mesh.faces.len();
         #[cfg(feature = "gpu")]
         self.renumber_device_mesh(&order);
@@ -499,41 +320,9 @@ impl Adapter {
         drop(order);
     }
 
-    /// The state update's split wishes of the edges of `mesh` (lent to the adapter for it).
-    fn wishes_of(&mut self, mesh: &mut Mesh, view: &View) -> Vec<bool> {
-        std::mem::swap(&mut self.mesh, mesh);
-        let wishes = self.edge_wants(view);
-        std::mem::swap(&mut self.mesh, mesh);
-        wishes
-    }
-
-    /// How many steps finer than a fitting mesh of `faces` faces the budget `max` allows, by
-    /// the faces added to the base mesh growing `1.25^2`-fold per step (where the view stays at
-    /// the base mesh's resolution nothing grows). Large when the mesh is the base mesh itself.
-    fn steps_to_fill(&self, faces: usize, max: usize) -> i32 {
-        let base = self.base.faces.len() as f64;
-        let (added, room) = (faces as f64 - base, max as f64 - base);
-        if added < 1.0 {
-            return MAX_STEP;
-        }
-        ((room / added).max(1.0).ln() / (2.0 * BUDGET_STEP.ln())).floor() as i32
-    }
-
-    /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit;
-    /// on the device when the adapter has one (`gpu/adapt.rs`, the same passes).
-    ///
-    /// With the camera fixed, an edge's answer never changes, so the flags are computed once
-    /// and then only for edges the splits touched; collapses are looked for in the first pass,
-    /// after a pass that collapsed something (coarsening unwinds level by level), and before
-    /// convergence is declared — except with `refine_only`, for a mesh that is a sub-refinement
-    /// of the target's (the base mesh, or one converged for a coarser target): every vertex it
-    /// has or gains is wanted or needed by a wanted split, so no collapse can be due.
-    /// `wishes`, when given, are the state update's answers for the mesh as it is.
-    ///
-    /// Collapses only mark what they remove, so the flags stay indexed by slot and need answers
-    /// only for the edges the collapses restored; the face cap counts live faces. The holes are
-    /// compacted once at the end, or early when they outgrow both a quarter of the face slots and
-    /// the slack `N_ALLOC`.
+    /// Passes until nothing changes (true), the face cap is exceeded or the pass limit is hit
+    /// (`run.rs`), on the device when the adapter has one. `wishes`, when given, are the state
+    /// update's answers for the mesh as it is.
     fn run(
         &mut self,
         view: &View,
@@ -543,10 +332,11 @@ impl Adapter {
         stats: &mut AdaptStats,
     ) -> bool {
         self.sync_host();
+        let cap = Some(face_cap(cap));
         #[cfg(feature = "gpu")]
         if let Some(g) = self.gpu.clone() {
             let before = (stats.clone(), self.ordered_faces);
-            match self.run_on_device(&g, view, Some(face_cap(cap)), refine_only, stats) {
+            match self.run_on_device(&g, view, cap, refine_only, stats) {
                 Ok(converged) => return converged,
                 Err(e) => {
                     // The host mesh is still the one the run started from: run it again here.
@@ -557,97 +347,12 @@ impl Adapter {
             }
         }
         self.forget_device_mesh();
-        self.run_on_cpu(view, Some(face_cap(cap)), refine_only, wishes, stats)
-    }
-
-    /// [`Adapter::run`] on the CPU.
-    fn run_on_cpu(
-        &mut self,
-        view: &View,
-        cap: Option<usize>,
-        refine_only: bool,
-        wishes: Option<Vec<bool>>,
-        stats: &mut AdaptStats,
-    ) -> bool {
-        let mut t = Instant::now();
-        let mut wants = match wishes {
-            Some(w) => w,
-            None => self.edge_wants(view),
-        };
-        lap(&mut t, &mut stats.stage_ms.state);
-        if refine_only && cap.is_some_and(|c| wishes_exceed(self.mesh.faces.len(), &wants, c)) {
-            return false;
+        let mut passes = cpu::CpuPasses::new(&mut self.mesh, &self.params, wishes);
+        let Ok(outcome) = run::adapt(&mut passes, view, cap, refine_only, stats);
+        if let Some(faces) = outcome.compacted_to {
+            self.ordered_faces = self.ordered_faces.min(faces);
         }
-        let mut converged = false;
-        let mut dead_faces = 0;
-        let mut look_for_collapses = true;
-        // Where the last collapses may have made more collapsible (None: look everywhere). Only
-        // the newest vertices of the faces a collapse restores can have become collapsible;
-        // elsewhere neither a vertex's faces nor the demanded edges changed.
-        let mut apexes: Option<Vec<u32>> = None;
-        let mut selection = split::Selection::default();
-        for _ in 0..MAX_PASSES {
-            stats.passes += 1;
-            // Over the face cap: only coarsen; if nothing can be, a coarser target is needed.
-            let over_cap = cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c);
-            if refine_only && over_cap {
-                break;
-            }
-            let ready = if over_cap { Vec::new() } else { selection.select(&self.mesh, &wants) };
-            lap(&mut t, &mut stats.stage_ms.select);
-            // From a sub-refinement every ready split is in the target's mesh: if they would
-            // take it over the cap, that already proves it (and memory stays within the cap).
-            if refine_only && cap.is_some_and(|c| self.mesh.faces.len() - dead_faces + 2 * ready.len() > c) {
-                break;
-            }
-            let answers = split::apply_splits(&mut self.mesh, &ready, &self.params, view);
-            let splits = ready.len();
-            state::record_splits(&mut wants, &ready, &answers);
-            lap(&mut t, &mut stats.stage_ms.split);
-            let mut collapses = 0;
-            if !refine_only && (look_for_collapses || splits == 0) {
-                let demanded = split::demanded(&self.mesh, &wants);
-                let mut sites = state::collapse_candidates(&self.mesh, view, &demanded, apexes.as_deref());
-                if sites.is_empty() && splits == 0 && apexes.is_some() {
-                    // Convergence is only declared after a look at every vertex.
-                    sites = state::collapse_candidates(&self.mesh, view, &demanded, None);
-                }
-                collapses = collapse::apply_collapses(&mut self.mesh, &sites);
-                lap(&mut t, &mut stats.stage_ms.collapse);
-                apexes = Some(state::restored_apexes(&sites));
-                if collapses > 0 {
-                    dead_faces += 2 * collapses;
-                    if dead_faces > compact::N_ALLOC.max(self.mesh.faces.len() / 4) {
-                        // Many holes: squeeze them out now (and decide every edge again) so
-                        // that memory stays within the slack policy.
-                        self.compact();
-                        dead_faces = 0;
-                        apexes = None;
-                        lap(&mut t, &mut stats.stage_ms.compact);
-                        wants = self.edge_wants(view);
-                    } else {
-                        state::update_after_collapses(&self.mesh, view, &mut wants, &sites);
-                    }
-                    lap(&mut t, &mut stats.stage_ms.state);
-                }
-            }
-            look_for_collapses = collapses > 0;
-            stats.splits += splits;
-            stats.collapses += collapses;
-            if splits == 0 && collapses == 0 {
-                converged = !over_cap;
-                break;
-            }
-            if !over_cap && cap.is_some_and(|c| self.mesh.faces.len() - dead_faces > c) {
-                look_for_collapses = true;
-                apexes = None;
-            }
-        }
-        if dead_faces > 0 {
-            self.compact();
-            lap(&mut t, &mut stats.stage_ms.compact);
-        }
-        converged
+        outcome.converged
     }
 }
 

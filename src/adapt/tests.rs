@@ -1,13 +1,13 @@
 use super::*;
-use crate::build::{build_planet, PlanetSpec, RiverGraph};
 use crate::mesh::{EdgeKind, VertexFlags};
+use crate::planet::{build_planet, PlanetSpec, RiverGraph};
 use glam::DVec3;
 use std::sync::OnceLock;
 
 const R: f64 = 6_371_000.0;
 
-fn base() -> &'static crate::build::Planet {
-    static P: OnceLock<crate::build::Planet> = OnceLock::new();
+fn base() -> &'static crate::planet::Planet {
+    static P: OnceLock<crate::planet::Planet> = OnceLock::new();
     P.get_or_init(|| {
         let spec = PlanetSpec { seed: 3, params: Params { base_faces: 2000, ..Params::paper() }, map: None };
         build_planet(&spec, &mut |_, _| {}).unwrap()
@@ -17,7 +17,7 @@ fn base() -> &'static crate::build::Planet {
 /// A camera `height` metres above the surface point at (lat, lon), looking at a point `ahead`
 /// metres to the north along the ground.
 fn camera(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
-    looking_north(crate::build::continents::direction(lat, lon), R + 3000.0, height, ahead, px)
+    looking_north(crate::planet::continents::direction(lat, lon), R + 3000.0, height, ahead, px)
 }
 
 /// A 320x180 camera `height` metres above the point in direction `dir` at distance `ground` from
@@ -236,7 +236,8 @@ fn check_riverbanks(m: &Mesh) {
                 if n.flags.contains(VertexFlags::REFINED) {
                     let le = n.p().normalize().distance(vert.p().normalize()) * m.radius;
                     banks += 1;
-                    under_floor += usize::from(n.ground < crate::mesh::altitude::riverbank_floor(vert, le, &p) - 1e-6);
+                    under_floor +=
+                        usize::from(n.ground < crate::mesh::split::altitude::riverbank_floor(vert, le, &p) - 1e-6);
                 }
             }
         }
@@ -302,7 +303,7 @@ fn no_run_may_outgrow_the_index_range() {
     // a pass that starts just under the cap: live faces at most doubled, dead slots up to a
     // quarter of all before the pass (a third of the live ones), and the slack.
     let faces = 2 * MAX_MESH_FACES + MAX_MESH_FACES / 3 + 1;
-    assert!(faces * 3 / 2 + compact::SLACK.1 < crate::mesh::NONE as usize - 1);
+    assert!(faces * 3 / 2 + cpu::compact::SLACK.1 < crate::mesh::NONE as usize - 1);
 }
 
 #[test]
@@ -422,7 +423,7 @@ fn coarsening_back_to_orbit_matches_a_direct_orbit_view() {
 
 #[test]
 fn buffers_grow_and_shrink_with_the_papers_slack() {
-    use crate::adapt::compact::{N_ALLOC, SLACK};
+    use crate::adapt::cpu::compact::{N_ALLOC, SLACK};
     let within = |m: &Mesh, what: &str| {
         for (name, len, cap, slack) in [
             ("vertices", m.vertices.len(), m.vertices.capacity(), SLACK.0),
@@ -556,7 +557,7 @@ fn centimetre_edges_at_earth_radius() {
     let v = m.vertices.iter().find(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.submerged()).unwrap();
     let target = v.p() + v.p().normalize().cross(DVec3::Z).normalize() * 0.37;
     let mut make = |m: &Mesh, site: &crate::mesh::SplitSite| {
-        crate::mesh::altitude::split_vertex(&crate::mesh::Diamond::new(m, site), &params, None)
+        crate::mesh::split::altitude::split_vertex(&crate::mesh::Diamond::new(m, site), &params, None)
     };
     let mut shortest = f64::MAX;
     for _ in 0..400 {
@@ -587,7 +588,7 @@ fn the_split_list_is_sorted_ready_and_serves_every_wish() {
     let (m, _) = adapted(&[camera(10.0, 20.0, 100_000.0, 300_000.0, 2.0)]);
     let mut rng = crate::rng::Sequence::new(7, 7);
     let wants: Vec<bool> = (0..m.edges.len()).map(|_| rng.unit() < 0.05).collect();
-    let mut selection = split::Selection::default();
+    let mut selection = cpu::select::Selection::default();
     let ready = selection.select(&m, &wants);
     assert!(ready.windows(2).all(|w| w[0] < w[1]), "not sorted or repeated");
     // Each is the refinement edge of both its faces.

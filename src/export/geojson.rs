@@ -12,7 +12,7 @@
 //!
 //! A lake is a Polygon (a MultiPolygon if its water stands in several pieces) with
 //! `kind: "lake"`, `lake_id`, `water_altitude_m`, `area_km2` and `endorheic` (no outlet to the
-//! sea); its Feature `id` is `"lake-<lake_id>"`. Its shore is [`crate::build::lakes::outlines`]:
+//! sea); its Feature `id` is `"lake-<lake_id>"`. Its shore is [`crate::planet::lakes::outlines`]:
 //! exterior rings counter-clockwise, islands clockwise, every position at the lake's level. A
 //! lake's rings are unwrapped across the antimeridian (longitudes may pass ±180° there) rather
 //! than cut.
@@ -24,12 +24,12 @@
 //! LineStrings. A reach of a single vertex (a broken network end) is written with its point
 //! repeated, so every LineString has two positions and every `downstream_id` still resolves.
 
-use crate::build::continents::lat_lon;
-use crate::build::lakes::{outlines, Lake};
-use crate::build::network::Reach;
-use crate::build::Planet;
 use crate::mesh::{Mesh, NONE};
 use crate::params::Params;
+use crate::planet::continents::lat_lon;
+use crate::planet::lakes::{outlines, Lake};
+use crate::planet::network::Reach;
+use crate::planet::Planet;
 use serde_json::{json, Value};
 
 /// Rounds to `decimals` decimal places (dividing by the power of ten prints cleanly).
@@ -301,7 +301,7 @@ mod tests {
         let params = Params::default();
         let a = rivers_geojson(planet, &params);
         let mut again = planet.clone();
-        again.rivers = crate::build::RiverGraph::from_mesh(&planet.mesh);
+        again.rivers = crate::planet::RiverGraph::from_mesh(&planet.mesh);
         assert_eq!(a, rivers_geojson(&again, &params));
     }
 

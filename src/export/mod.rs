@@ -63,15 +63,15 @@ pub fn surface_normals(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<DVec3> {
 
 /// A small planet shared by the export tests (built once).
 #[cfg(test)]
-pub(crate) fn test_planet() -> &'static crate::build::Planet {
+pub(crate) fn test_planet() -> &'static crate::planet::Planet {
     use std::sync::OnceLock;
-    static PLANET: OnceLock<crate::build::Planet> = OnceLock::new();
+    static PLANET: OnceLock<crate::planet::Planet> = OnceLock::new();
     PLANET.get_or_init(|| {
-        let spec = crate::build::PlanetSpec {
+        let spec = crate::planet::PlanetSpec {
             seed: 1,
             params: crate::params::Params { base_faces: 2000, ..Default::default() },
             map: None,
         };
-        crate::build::build_planet(&spec, &mut |_, _| {}).expect("test planet builds")
+        crate::planet::build_planet(&spec, &mut |_, _| {}).expect("test planet builds")
     })
 }

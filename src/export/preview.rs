@@ -14,10 +14,10 @@
 use super::climate::{climate_colour, water_colour};
 use super::raster::{encode_png, SphereRaster};
 use super::surface_normals;
-use crate::build::continents::lat_lon;
-use crate::build::RiverGraph;
 use crate::mesh::{FaceKind, Mesh, VertexFlags};
 use crate::params::Params;
+use crate::planet::continents::lat_lon;
+use crate::planet::RiverGraph;
 use glam::DVec3;
 use rayon::prelude::*;
 

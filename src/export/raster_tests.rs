@@ -1,10 +1,10 @@
 use super::*;
-use crate::build::continents::{classify, land_fraction};
-use crate::build::shape::{octahedron, refine_to};
 use crate::export::test_planet;
 use crate::geo::lat_lon;
 use crate::mesh::raster::*;
 use crate::mesh::NONE;
+use crate::planet::continents::{classify, land_fraction};
+use crate::planet::shape::{octahedron, refine_to};
 use glam::DVec3;
 use std::io::Cursor;
 use tiff::decoder::{Decoder, DecodingResult};

@@ -18,9 +18,9 @@
 
 use super::geojson::{reach_lake, reach_slope, split_antimeridian, unwrapped_rings};
 use super::terrain_rgb::{tile_bounds, TileError, MAX_LAT, MAX_ZOOM};
-use crate::build::lakes::outlines;
-use crate::build::Planet;
 use crate::geo::lat_lon;
+use crate::planet::lakes::outlines;
+use crate::planet::Planet;
 use mvt::{GeomEncoder, GeomType, Tile};
 use pointy::BBox;
 use serde_json::json;

@@ -5,7 +5,7 @@ use super::climate::water_colour;
 use super::glb::{encode_glb, linear_rgba, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh, GlbTooLarge};
 use super::surface_normals;
 use super::water::{shows_water, water_levels};
-use crate::mesh::terrain::lift;
+use crate::mesh::split::position::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
 use glam::DVec3;
@@ -98,7 +98,7 @@ mod tests {
         let planet = crate::export::test_planet();
         let p = Params { base_faces: 2000, ..Params::default() };
         let r = p.radius_m;
-        let dir = crate::build::continents::direction(5.0, 10.0);
+        let dir = crate::planet::continents::direction(5.0, 10.0);
         let eye = dir * (r + 3000.0 + 2000.0);
         let cam = Camera::new(eye, dir * (r + 3000.0) + DVec3::Z * 5000.0, None, 60.0, 320, 180, 4.0, 20.0, r).unwrap();
         let mut a = Adapter::new(planet.mesh.clone(), p.clone());

@@ -4,7 +4,7 @@
 //! river's channel rather than every face beside it (`export/water.rs`).
 //!
 //! Widths come from the discharge of the planet's climate by hydraulic geometry
-//! (`build/network.rs`: Leopold & Maddock, `w = 3.5 Q^0.51`); a river that does not flow all
+//! (`planet/network.rs`: Leopold & Maddock, `w = 3.5 Q^0.51`); a river that does not flow all
 //! year (a wadi) has width 0, a dry bed.
 
 use glam::DVec3;

@@ -12,25 +12,23 @@
 //! Earth radius an `f64` resolves ~1 nm, so the paper's 1 cm minimum edge length is far above the
 //! rounding error.
 
-pub mod altitude;
 mod batch;
 pub mod channels;
 mod collapse;
+mod compact;
 mod diamond;
 pub mod guide;
 mod kinds;
-mod order;
 mod packed;
 pub mod prefetch;
 pub mod raster;
-mod split;
-pub mod terrain;
+pub mod split;
 pub mod validate;
 
 pub use collapse::CollapseSite;
+pub use compact::Renumbering;
 pub use diamond::Diamond;
 pub use kinds::{EdgeKind, FaceKind, VertexFlags};
-pub use order::Renumbering;
 pub use packed::{Lod, Tangent};
 pub use split::{split_kinds, Split, SplitSite};
 
@@ -211,7 +209,7 @@ pub const VERTEX_BYTES: usize = std::mem::size_of::<Vertex>();
 pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>();
 pub const FACE_BYTES: usize = std::mem::size_of::<Face>();
 
-// The WGSL twins of these structs (`shaders/adapt_mesh.wgsl`) spell the same layouts out.
+// The WGSL twins of these structs (`shaders/adapt/layout.wgsl`) spell the same layouts out.
 const _: () = assert!(VERTEX_BYTES == 56 && EDGE_BYTES == 24 && FACE_BYTES == 12);
 
 impl Mesh {

@@ -1,5 +1,5 @@
 use super::*;
-use crate::build::shape::{octahedron, refine_to};
+use crate::planet::shape::{octahedron, refine_to};
 use glam::DVec3;
 
 fn sphere(faces: usize) -> Mesh {
@@ -148,7 +148,7 @@ fn batches_of_splits_and_collapses_equal_one_at_a_time() {
     for f in (0..m.faces.len() as u32).filter(|f| f % 3 == 0) {
         m.set_face_kind(f, FaceKind::Land);
     }
-    crate::build::continents::classify(&mut m);
+    crate::planet::continents::classify(&mut m);
     let sites: Vec<SplitSite> = (0..m.edges.len() as u32).filter_map(|e| m.split_site(e)).collect();
     assert!(sites.len() > 1000, "{}", sites.len());
     // Each vertex a function of its diamond: the edge's midpoint, seeded by the edge.
@@ -207,11 +207,11 @@ fn a_face_kind_is_kept_by_its_three_edges() {
     // Edge kinds not yet following the faces: validation names the mismatch.
     let err = m.validate().unwrap_err();
     assert!(err.contains("lies between faces of kinds"), "{err}");
-    crate::build::continents::classify(&mut m);
+    crate::planet::continents::classify(&mut m);
     m.validate().unwrap();
     m.set_face_kind(f, FaceKind::Sea);
     assert!(m.edges.iter().all(|e| e.land == 0));
-    crate::build::continents::classify(&mut m);
+    crate::planet::continents::classify(&mut m);
     m.validate().unwrap();
     // One edge alone saying a face is land: the face's edges disagree.
     let e = m.faces[f as usize].e[1] as usize;

@@ -1,5 +1,5 @@
 //! The wgpu device and pipelines of snapshot rendering: created once, shared by every render,
-//! one frame at a time (a mutex queues concurrent callers). Draws `shaders/terrain.wgsl` into an
+//! one frame at a time (a mutex queues concurrent callers). Draws `shaders/render.wgsl` into an
 //! offscreen sRGB target with a reversed-Z 32-bit float depth buffer and reads the pixels back.
 
 use super::scene::{FrameUniforms, RenderVertex, Scene};
@@ -10,7 +10,7 @@ use std::sync::Mutex;
 use wgpu::util::DeviceExt;
 
 /// The shader of every pass.
-pub const SHADER: &str = include_str!("../../shaders/terrain.wgsl");
+pub const SHADER: &str = include_str!("../../shaders/render.wgsl");
 /// Size of the climate lookup texture (altitude x latitude).
 const CLIMATE_SIZE: (u32, u32) = (512, 256);
 /// Texels of the water colour ramp (square root of depth / darkest depth).

@@ -1,6 +1,6 @@
 //! What a snapshot draws, prepared on the CPU: eye-relative vertices, the water triangles and
 //! the frame uniforms (paper §3.3 shading inputs), in the `#[repr(C)]` layouts of
-//! `shaders/terrain.wgsl`.
+//! `shaders/render.wgsl`.
 //!
 //! Precision: vertex positions are `f64` in the mesh; here they become `f32` offsets from the
 //! eye, computed in `f64`, so the error is relative to the distance from the camera (about 0.1 mm
@@ -10,9 +10,9 @@
 //! far-plane clipping and no z-fighting between the ground and the water above it.
 
 use crate::adapt::Camera;
-use crate::build::continents::lat_lon;
 use crate::mesh::Mesh;
 use crate::params::Params;
+use crate::planet::continents::lat_lon;
 use bytemuck::{Pod, Zeroable};
 use glam::{DMat4, DVec3};
 use rayon::prelude::*;

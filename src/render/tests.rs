@@ -2,10 +2,10 @@
 //! adapter: lavapipe in CI).
 
 use super::*;
-use crate::build::continents::direction;
-use crate::build::{build_planet, Planet, PlanetSpec};
 use crate::maps::{Map, MapKind, MapLimits};
 use crate::mesh::VertexFlags;
+use crate::planet::continents::direction;
+use crate::planet::{build_planet, Planet, PlanetSpec};
 use std::sync::OnceLock;
 
 fn earth() -> &'static (Planet, Params) {
@@ -98,7 +98,7 @@ fn ground_view_shows_a_river_where_the_mesh_has_one() {
     // the hills (snow is nearly as blue as water).
     let mut reaches = planet.rivers.reaches(mesh, &[]);
     reaches.sort_by(|a, b| b.upstream_area_m2.total_cmp(&a.upstream_area_m2));
-    let middle = |r: &&crate::build::network::Reach| r.vertices[r.vertices.len() / 2];
+    let middle = |r: &&crate::planet::network::Reach| r.vertices[r.vertices.len() / 2];
     let reach = reaches
         .iter()
         .find(|r| r.vertices.len() > 6 && mesh.vertices[middle(r) as usize].ground < params.sea_level_m + 2000.0)

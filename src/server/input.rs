@@ -19,7 +19,7 @@ pub const ID_HEX: usize = 16;
 pub struct NewPlanet {
     pub input: StoredInput,
     pub map: Option<Bytes>,
-    /// Faces its base mesh will about have, at most ([`crate::build::estimated_faces`]).
+    /// Faces its base mesh will about have, at most ([`crate::planet::estimated_faces`]).
     pub estimated_faces: usize,
 }
 
@@ -60,7 +60,7 @@ pub async fn read(req: Request<Body>, limits: MapLimits, heavy: &HeavyLimit) -> 
             let text = std::str::from_utf8(&bytes)
                 .map_err(|_| ApiError::unprocessable("invalid_params", "body", "the body is not UTF-8"))?;
             let request = PlanetRequest::from_json(text).map_err(|e| ApiError::from_params(&e))?;
-            let estimated_faces = crate::build::estimated_faces(&request.params, None);
+            let estimated_faces = crate::planet::estimated_faces(&request.params, None);
             let input = StoredInput { seed: request.seed, params: request.params, map: None };
             Ok(NewPlanet { input, map: None, estimated_faces })
         }
@@ -123,7 +123,7 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit
             }
             "map_range" => {
                 let text = text_part(&name, &bytes)?;
-                range = Some(crate::generate::parse_range(&text).map_err(|e| ApiError::from_map(&e))?);
+                range = Some(crate::input::parse_range(&text).map_err(|e| ApiError::from_map(&e))?);
             }
             "map_bounds" => {
                 let text = text_part(&name, &bytes)?;
@@ -160,7 +160,7 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit
     let decoded = decode_map(map.clone(), kind, range, bounds, limits).await.map_err(|e| ApiError::from_map(&e))?;
     drop(admitted);
     check_land_and_sea(&decoded)?;
-    let estimated_faces = crate::build::estimated_faces(&request.params, Some(&decoded));
+    let estimated_faces = crate::planet::estimated_faces(&request.params, Some(&decoded));
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
     let input = StoredInput { seed: request.seed, params: request.params, map: Some(meta) };
     Ok(NewPlanet { input, map: Some(map), estimated_faces })

@@ -77,7 +77,7 @@ fn admit_size(new: &input::NewPlanet, limit: usize) -> Result<(), ApiError> {
     if new.estimated_faces <= limit {
         return Ok(());
     }
-    let without_map = crate::build::estimated_faces(&new.input.params, None);
+    let without_map = crate::planet::estimated_faces(&new.input.params, None);
     let field = if new.map.is_some() && without_map <= limit { "map" } else { "params.base_faces" };
     Err(ApiError::unprocessable(
         "too_large",

@@ -7,8 +7,8 @@ use super::jobs::{ClientTicket, Pool};
 use super::metrics::Metrics;
 use super::store::{Store, StoredInput};
 use super::Config;
-use crate::build::{build_planet, BuildError, Planet, PlanetSpec, Stats};
 use crate::maps::{Map, MapLimits};
+use crate::planet::{build_planet, BuildError, Planet, PlanetSpec, Stats};
 use axum::body::Bytes;
 use axum::http::StatusCode;
 use serde::Serialize;
@@ -368,7 +368,7 @@ fn build_entry(state: &AppState, entry: &Entry) -> Result<Planet, ApiError> {
             Some(Arc::new(map))
         }
     };
-    let cost = crate::build::estimated_faces(&input.params, map.as_deref()) as u64 * BUILD_BYTES_PER_FACE;
+    let cost = crate::planet::estimated_faces(&input.params, map.as_deref()) as u64 * BUILD_BYTES_PER_FACE;
     let _admitted = state.runtime.block_on(state.renders.admit_unqueued(cost));
     let spec = PlanetSpec { seed: input.seed, params: input.params.clone(), map };
     let mut progress = |_: &str, f: f32| {

@@ -11,9 +11,9 @@
 use super::error::ApiError;
 use super::resources::{cache_key, cached, compression_value, cost, unknown_key, Derived};
 use super::state::{AppState, Cached, Entry};
-use crate::build::Planet;
 use crate::export::glb::Compression;
 use crate::export::tiles::{self, is_subtree_root, KeyError, PlanetTiles, TileFile, TileKey};
+use crate::planet::Planet;
 use crate::query::{pairs, percent_decode};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};

@@ -5,7 +5,7 @@
 //! reuse the same buffers and only counts cross the bus until the mesh is read back.
 
 use super::{GpuAdaption, GpuError};
-use crate::adapt::compact::SLACK;
+use crate::adapt::cpu::compact::SLACK;
 use crate::mesh::{Edge, Face, Mesh, Vertex, EDGE_BYTES, FACE_BYTES, VERTEX_BYTES};
 use wgpu::BufferUsages as U;
 

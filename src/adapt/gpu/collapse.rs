@@ -1,6 +1,6 @@
-//! Vertex collapses on the device (paper §5.4, Algorithm 3): `shaders/adapt_collapse.wgsl`, the
+//! Vertex collapses on the device (paper §5.4, Algorithm 3): `shaders/adapt/collapse.wgsl`, the
 //! twin of [`crate::mesh::Mesh::collapse_vertices`], on the candidates the state update marked
-//! (`state.rs`, `collapse_candidates` in `shaders/adapt_state.wgsl`).
+//! (`state.rs`, `collapse_candidates` in `shaders/adapt/state.wgsl`).
 
 use super::buffers::DeviceMesh;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission, WORKGROUP};
@@ -8,7 +8,7 @@ use crate::adapt::View;
 use bytemuck::{Pod, Zeroable};
 
 /// A vertex-wise dispatch of the collapse stages as the shaders read it (`struct Sweep` in
-/// `shaders/adapt_mesh.wgsl`).
+/// `shaders/adapt/layout.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(super) struct Sweep {
@@ -43,8 +43,8 @@ impl CollapsePipeline {
             device,
             "adapt_collapse.wgsl",
             &[
-                include_str!("../../../shaders/adapt_collapse.wgsl"),
-                include_str!("../../../shaders/adapt_view.wgsl"),
+                include_str!("../../../shaders/adapt/collapse.wgsl"),
+                include_str!("../../../shaders/adapt/view.wgsl"),
                 super::EDGE_HELPERS,
             ],
         )?;

@@ -1,7 +1,7 @@
-//! Buffer compaction on the device (paper §5.5): `shaders/adapt_compact.wgsl`, the twin of
+//! Buffer compaction on the device (paper §5.5): `shaders/adapt/compact.wgsl`, the twin of
 //! [`crate::mesh::Mesh::compact`] (the live entities keep their order). The spatial order, a
 //! sort, is computed on the host, which holds the mesh between cameras; the device copy
-//! follows its new ids with the same moves (see `adapt/compact.rs`).
+//! follows its new ids with the same moves (see `adapt/cpu/compact.rs`).
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError, ScanGrid, Stage, Submission};
@@ -21,7 +21,7 @@ impl CompactPipeline {
         let module = super::shader(
             device,
             "adapt_compact.wgsl",
-            &[include_str!("../../../shaders/adapt_compact.wgsl"), include_str!("../../../shaders/adapt_scan.wgsl")],
+            &[include_str!("../../../shaders/adapt/compact.wgsl"), include_str!("../../../shaders/adapt/scan.wgsl")],
         )?;
         let p = |entry| super::pipeline(device, &module, entry);
         Ok(CompactPipeline {

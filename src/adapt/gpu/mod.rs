@@ -1,7 +1,7 @@
 //! The wgpu compute backend of view-dependent adaption (paper §5): each stage that runs on the
 //! device has its WGSL twin in `shaders/adapt_*.wgsl`, reading the mesh buffers in the
 //! `#[repr(C)]` layouts of `crate::mesh` (`Vertex`, `Edge`, `Face`, spelt out once for the
-//! shaders in `shaders/adapt_mesh.wgsl`) through bytemuck.
+//! shaders in `shaders/adapt/layout.wgsl`) through bytemuck.
 //!
 //! On the device: the state update with its collapse candidates (`state.rs`), split-list
 //! compaction with its prefix sums (`select.rs`), the edge splits with their terrain
@@ -21,18 +21,18 @@
 //! are refused, and `auto` takes a GPU only when a small planet adapts there exactly as on the
 //! CPU (`reproduce.rs`): it stays on the CPU otherwise.
 
-mod adapt;
 mod buffers;
 mod collapse;
 mod compact;
 mod reproduce;
+mod run;
 mod select;
 mod spirv;
 mod split;
 mod state;
 
-pub use adapt::Resident;
 pub use buffers::DeviceMesh;
+pub use run::Resident;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -355,11 +355,11 @@ pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u
 }
 
 /// Edge helpers (`far_end`) of the stages that bind `edges`: split, state and collapse.
-const EDGE_HELPERS: &str = include_str!("../../../shaders/adapt_edges.wgsl");
+const EDGE_HELPERS: &str = include_str!("../../../shaders/adapt/edges.wgsl");
 
-/// `shaders/adapt_mesh.wgsl` followed by `sources`.
+/// `shaders/adapt/layout.wgsl` followed by `sources`.
 fn stage_source(sources: &[&str]) -> String {
-    let mut full = include_str!("../../../shaders/adapt_mesh.wgsl").to_string();
+    let mut full = include_str!("../../../shaders/adapt/layout.wgsl").to_string();
     for source in sources {
         full.push('\n');
         full.push_str(source);
@@ -379,7 +379,7 @@ enum Shader {
     SpirV(Vec<(spirv::Entry, wgpu::ShaderModule)>),
 }
 
-/// A stage's shader: `shaders/adapt_mesh.wgsl` followed by the stage's own sources; SPIR-V
+/// A stage's shader: `shaders/adapt/layout.wgsl` followed by the stage's own sources; SPIR-V
 /// without contraction where the device takes it (`spirv.rs`), else WGSL.
 fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> Result<Shader, GpuError> {
     let full = stage_source(sources);

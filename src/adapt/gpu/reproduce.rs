@@ -6,8 +6,8 @@
 
 use super::{GpuAdaption, GpuError};
 use crate::adapt::{Adapter, Camera};
-use crate::build::{build_planet, PlanetSpec};
 use crate::params::Params;
+use crate::planet::{build_planet, PlanetSpec};
 use std::sync::Arc;
 
 /// Faces of the canary's view: enough splits for every kind of vertex, quick on any device.

@@ -1,9 +1,9 @@
 //! Split-list compaction on the device (paper §5.3, Algorithm 2 steps 1–2):
-//! `shaders/adapt_select.wgsl`, the twin of [`crate::adapt::split::Selection::select`]. Chains of
+//! `shaders/adapt/select.wgsl`, the twin of [`crate::adapt::cpu::split::Selection::select`]. Chains of
 //! blocking edges are walked with an atomic flag per edge; the ready edges are compacted into
-//! a list in edge order by a prefix sum over blocks (`shaders/adapt_scan.wgsl`), so the list
+//! a list in edge order by a prefix sum over blocks (`shaders/adapt/scan.wgsl`), so the list
 //! is the CPU's. The chain flags left in `seen` are the demanded edges of
-//! [`crate::adapt::state::demanded`], which the collapse candidates read.
+//! [`crate::adapt::cpu::state::demanded`], which the collapse candidates read.
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, ScanGrid, Stage, Submission};
@@ -20,7 +20,7 @@ impl SelectPipeline {
         let module = super::shader(
             device,
             "adapt_select.wgsl",
-            &[include_str!("../../../shaders/adapt_select.wgsl"), include_str!("../../../shaders/adapt_scan.wgsl")],
+            &[include_str!("../../../shaders/adapt/select.wgsl"), include_str!("../../../shaders/adapt/scan.wgsl")],
         )?;
         Ok(SelectPipeline {
             walk: super::pipeline(device, &module, "walk_chains"),

@@ -27,7 +27,7 @@ const TYPES: std::ops::RangeInclusive<u32> = 19..=39;
 /// Words of the SPIR-V header.
 const HEADER: usize = 5;
 /// The workgroup variables the shaders may declare: each invocation writes its own element of
-/// the scan's `part` (`shaders/adapt_scan.wgsl`) before the barrier that precedes any read, so
+/// the scan's `part` (`shaders/adapt/scan.wgsl`) before the barrier that precedes any read, so
 /// the modules skip WGSL's zero-fill of workgroup memory (naga's polyfill, one invocation
 /// storing the whole array behind a barrier, tripled the split-list compaction on lavapipe).
 const WRITTEN_BEFORE_READ: [&str; 1] = ["part"];
@@ -200,7 +200,7 @@ mod tests {
 
     fn split_stage() -> Entry {
         let mut entries = compile(&super::super::stage_source(&[
-            include_str!("../../../shaders/adapt_split.wgsl"),
+            include_str!("../../../shaders/adapt/split.wgsl"),
             super::super::EDGE_HELPERS,
         ]))
         .unwrap();
@@ -246,8 +246,8 @@ mod tests {
     #[test]
     fn descriptors_are_numbered_as_wgpu_numbers_them_on_vulkan() {
         let source = super::super::stage_source(&[
-            include_str!("../../../shaders/adapt_state.wgsl"),
-            include_str!("../../../shaders/adapt_view.wgsl"),
+            include_str!("../../../shaders/adapt/state.wgsl"),
+            include_str!("../../../shaders/adapt/view.wgsl"),
             super::super::EDGE_HELPERS,
         ]);
         let entries = compile(&source).unwrap();

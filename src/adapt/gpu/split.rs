@@ -1,13 +1,13 @@
-//! Edge splits on the device (paper §5.3, Algorithm 2 steps 3–6): `shaders/adapt_split.wgsl`,
-//! the twin of [`crate::adapt::split::apply_splits`] — new vertices by
-//! [`crate::mesh::altitude::split_vertex`] and the topology of `Mesh::split_edges`, one
+//! Edge splits on the device (paper §5.3, Algorithm 2 steps 3–6): `shaders/adapt/split.wgsl`,
+//! the twin of [`crate::adapt::cpu::split::apply_splits`] — new vertices by
+//! [`crate::mesh::split::altitude::split_vertex`] and the topology of `Mesh::split_edges`, one
 //! invocation per entry of the split list, writing the slots the CPU would.
 
 use super::buffers::DeviceMesh;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
-use crate::mesh::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS, SEA_ROUGHNESS_LENGTH};
 use crate::mesh::guide::{Guide, GuideFace};
-use crate::mesh::terrain::MIN_SPLIT_QUALITY;
+use crate::mesh::split::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS, SEA_ROUGHNESS_LENGTH};
+use crate::mesh::split::position::MIN_SPLIT_QUALITY;
 use crate::mesh::Tangent;
 use crate::params::Params;
 use bytemuck::{Pod, Zeroable};
@@ -141,7 +141,7 @@ impl SplitPipeline {
         let module = super::shader(
             device,
             "adapt_split.wgsl",
-            &[include_str!("../../../shaders/adapt_split.wgsl"), super::EDGE_HELPERS],
+            &[include_str!("../../../shaders/adapt/split.wgsl"), super::EDGE_HELPERS],
         )?;
         let no_guide = GuideBuffers::new(device, &[0; std::mem::size_of::<GuideFace>()], &[0; 4]);
         Ok(SplitPipeline {

@@ -1,5 +1,5 @@
-//! State update on the device (paper §5.1, Algorithm 1): `shaders/adapt_state.wgsl`, the twin
-//! of [`crate::adapt::state::edge_wants`] and [`crate::adapt::state::collapse_candidates`].
+//! State update on the device (paper §5.1, Algorithm 1): `shaders/adapt/state.wgsl`, the twin
+//! of [`crate::adapt::cpu::state::edge_wants`] and [`crate::adapt::cpu::state::collapse_candidates`].
 
 use super::buffers::DeviceMesh;
 use super::collapse::Sweep;
@@ -59,8 +59,8 @@ impl StatePipeline {
             device,
             "adapt_state.wgsl",
             &[
-                include_str!("../../../shaders/adapt_state.wgsl"),
-                include_str!("../../../shaders/adapt_view.wgsl"),
+                include_str!("../../../shaders/adapt/state.wgsl"),
+                include_str!("../../../shaders/adapt/view.wgsl"),
                 super::EDGE_HELPERS,
             ],
         )?;

@@ -2,10 +2,11 @@
 //! for every edge, and so the same adapted meshes, bit for bit.
 
 use super::*;
-use crate::adapt::{state, Adapter, Camera, View};
-use crate::build::{build_planet, Planet, PlanetSpec};
+use crate::adapt::cpu::state;
+use crate::adapt::{Adapter, Camera, View};
 use crate::mesh::Mesh;
 use crate::params::Params;
+use crate::planet::{build_planet, Planet, PlanetSpec};
 use glam::DVec3;
 use proptest::prelude::*;
 use std::sync::OnceLock;
@@ -95,7 +96,7 @@ fn assert_same_mesh(cpu: &Mesh, dev: &Mesh, what: &str) {
 /// A camera `height` m above the ground at (lat, lon) looking `ahead` m along the ground to the north.
 fn ground(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
     let sea = Params::paper().sea_level_m;
-    let dir = crate::build::continents::direction(lat, lon);
+    let dir = crate::planet::continents::direction(lat, lon);
     let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
     let eye = dir * (R + sea + height);
     let target = (dir + north * (ahead / R)).normalize() * (R + sea);
@@ -113,7 +114,7 @@ fn vulkan_runs_the_shaders_without_fused_multiply_adds() {
 #[test]
 fn a_fly_through_adapts_to_the_same_meshes_on_both_backends() {
     let sea = Params::paper().sea_level_m;
-    let cams = crate::bench_adapt::fly_through(R, sea, 12.0, 30.0, 20);
+    let cams = crate::adapt::flight::fly_through(R, sea, 12.0, 30.0, 20);
     let mut cpu = Adapter::new(planet().mesh.clone(), Params::paper());
     let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(gpu()));
     for (i, cam) in cams.iter().enumerate() {
@@ -241,7 +242,7 @@ fn a_jump_from_the_ground_to_orbit_coarsens_alike() {
         assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
         assert_eq!((a.splits, a.collapses, a.passes), (b.splits, b.collapses, b.passes), "camera {i}");
         if i == 1 {
-            assert!(2 * a.collapses > crate::adapt::compact::N_ALLOC, "only {} collapses", a.collapses);
+            assert!(2 * a.collapses > crate::adapt::cpu::compact::N_ALLOC, "only {} collapses", a.collapses);
         }
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }
@@ -255,7 +256,7 @@ fn mesh_with_holes() -> (Mesh, usize) {
     let mut mesh = a.mesh().clone();
     let far = view(&ground(-40.0, -100.0, 1e7, 2e7, 4.0));
     let wants = state::edge_wants(&mesh, &far);
-    let sites = state::collapse_candidates(&mesh, &far, &crate::adapt::split::demanded(&mesh, &wants), None);
+    let sites = state::collapse_candidates(&mesh, &far, &crate::adapt::cpu::select::demanded(&mesh, &wants), None);
     assert!(sites.len() > 1000, "only {} collapses", sites.len());
     // SAFETY: the sites were found on this mesh, one per vertex.
     unsafe { mesh.collapse_vertices(&sites) };
@@ -302,7 +303,7 @@ fn the_device_copy_follows_the_spatial_order_of_the_host() {
     // Between cameras an adapter orders its mesh and keeps the device copy, which follows.
     let mut dev = Adapter::new(planet().mesh.clone(), Params::paper()).with_gpu(Some(g.clone()));
     dev.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), None);
-    assert!(crate::adapt::compact::scattered(dev.mesh.faces.len(), dev.ordered_faces));
+    assert!(crate::adapt::cpu::compact::scattered(dev.mesh.faces.len(), dev.ordered_faces));
     dev.order();
     let kept = dev.resident.mesh.as_ref().expect("the device copy is kept through the ordering");
     assert!(!dev.resident.ahead);
@@ -340,23 +341,23 @@ fn shader_constants_match_the_host() {
         src.split("@workgroup_size(").skip(1).map(|s| s[..s.find(')').unwrap()].trim().parse().unwrap()).collect()
     };
     let shaders: [(&str, &str, u32); 6] = [
-        ("split", include_str!("../../../shaders/adapt_split.wgsl"), split::WORKGROUP),
-        ("state", include_str!("../../../shaders/adapt_state.wgsl"), super::state::WORKGROUP),
-        ("select", include_str!("../../../shaders/adapt_select.wgsl"), WORKGROUP),
-        ("scan", include_str!("../../../shaders/adapt_scan.wgsl"), WORKGROUP),
-        ("collapse", include_str!("../../../shaders/adapt_collapse.wgsl"), WORKGROUP),
-        ("compact", include_str!("../../../shaders/adapt_compact.wgsl"), WORKGROUP),
+        ("split", include_str!("../../../shaders/adapt/split.wgsl"), split::WORKGROUP),
+        ("state", include_str!("../../../shaders/adapt/state.wgsl"), super::state::WORKGROUP),
+        ("select", include_str!("../../../shaders/adapt/select.wgsl"), WORKGROUP),
+        ("scan", include_str!("../../../shaders/adapt/scan.wgsl"), WORKGROUP),
+        ("collapse", include_str!("../../../shaders/adapt/collapse.wgsl"), WORKGROUP),
+        ("compact", include_str!("../../../shaders/adapt/compact.wgsl"), WORKGROUP),
     ];
     for (name, src, size) in shaders {
         let found = sizes(src);
         assert!(!found.is_empty() && found.iter().all(|&s| s == size), "{name}: {found:?} vs {size}");
     }
-    assert!(include_str!("../../../shaders/adapt_scan.wgsl").contains(&format!("const BLOCK: u32 = {BLOCK}u;")));
-    let split_src = include_str!("../../../shaders/adapt_split.wgsl");
+    assert!(include_str!("../../../shaders/adapt/scan.wgsl").contains(&format!("const BLOCK: u32 = {BLOCK}u;")));
+    let split_src = include_str!("../../../shaders/adapt/split.wgsl");
     let scale = crate::mesh::Tangent::SCALE;
     assert_eq!(split_src.matches(&format!("f64(-{scale:.1}), f64({scale:.1})")).count(), 2);
     assert_eq!(crate::mesh::LOD_RADIUS, 1.0);
-    let mesh_src = include_str!("../../../shaders/adapt_mesh.wgsl");
+    let mesh_src = include_str!("../../../shaders/adapt/layout.wgsl");
     use crate::mesh::VertexFlags as F;
     for (name, flag) in [("RIVER", F::RIVER), ("REFINED", F::REFINED), ("LAKE", F::LAKE)] {
         assert!(mesh_src.contains(&format!("const FLAG_{name}: u32 = {}u;", flag.0)), "FLAG_{name}");
@@ -392,7 +393,7 @@ fn a_planet_with_other_parameters_adapts_alike() {
     let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
     for (i, (lat, lon, height)) in [(10.0, 20.0, 3e6), (-30.0, 140.0, 2e4), (45.0, -60.0, 3e3)].into_iter().enumerate()
     {
-        let dir = crate::build::continents::direction(lat, lon);
+        let dir = crate::planet::continents::direction(lat, lon);
         let eye = dir * (r + params.sea_level_m + height);
         let cam = Camera::new(eye, dir * r + DVec3::Z * (height + 1e4), None, 50.0, 480, 270, 3.0, 15.0, r).unwrap();
         let v = View::new(&cam, r, params.min_edge_length_m, top);
@@ -421,7 +422,7 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
     // the map's ground).
     let cameras = [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4), (28.0, 86.0, 4e5)];
     for (i, (lat, lon, height)) in cameras.into_iter().enumerate() {
-        let dir = crate::build::continents::direction(lat, lon);
+        let dir = crate::planet::continents::direction(lat, lon);
         let north = (DVec3::Z - dir * dir.z).normalize();
         let target = (dir + north * 0.01).normalize() * r;
         let cam = Camera::new(dir * (r + height), target, None, 60.0, 640, 360, 3.0, 15.0, r).unwrap();

@@ -15,7 +15,7 @@ use super::tree::{Refiner, ROOTS};
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
 use crate::export::view::water_mesh;
 use crate::export::water::water_levels;
-use crate::mesh::terrain::lift;
+use crate::mesh::split::position::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
 use glam::{DQuat, DVec3};

@@ -43,9 +43,9 @@ pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
 pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
-use crate::build::Planet;
 use crate::export::glb::Compression;
 use crate::params::Params;
+use crate::planet::Planet;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::collections::HashMap;

@@ -9,7 +9,7 @@
 //! adaption's split rule ([`split_vertex`]) on a copy of the base mesh made on the first split.
 //! The same node therefore always gets the same vertices, bit for bit, as in a view.
 
-use crate::mesh::altitude::split_vertex;
+use crate::mesh::split::altitude::split_vertex;
 use crate::mesh::{Mesh, SplitSite, VertexFlags};
 use crate::params::Params;
 use rustc_hash::FxHashMap as HashMap;

@@ -6,8 +6,8 @@
 //! network floods upwards from the coast and rivers settle in the map's valleys.
 
 use crate::maps::Map;
-use crate::mesh::altitude::riverbank_floor;
-use crate::mesh::terrain::{altitude_random, lift, split_position, split_seed, tangent_towards};
+use crate::mesh::split::altitude::riverbank_floor;
+use crate::mesh::split::position::{altitude_random, lift, split_position, split_seed, tangent_towards};
 use crate::mesh::{split_kinds, Diamond, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags, NONE};
 use crate::params::Params;
 use crate::rng::{salt, unit, Sequence};

@@ -239,7 +239,7 @@ const STATIONS: [(&str, f64, f64, f64); 37] = [
 
 #[test]
 fn precipitation_is_within_a_factor_of_two_at_most_stations() {
-    use crate::build::climate::{Climate, HEIGHT, WIDTH};
+    use crate::planet::climate::{Climate, HEIGHT, WIDTH};
     let Ok(bytes) = std::fs::read("maps/earth_etopo5_1024x512.tif") else { return };
     let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
     let cells: Vec<(bool, f64)> = (0..WIDTH * HEIGHT)
@@ -513,7 +513,7 @@ fn great_rivers_carry_their_discharge_within_a_factor_of_three() {
     assert!(q("Congo") > 10.0 * q("Murray-Darling"), "{table:?}");
     let reaches = planet.rivers.reaches(&planet.mesh, &planet.runoff_mm);
     let dry_share = |(s, n, w, e): (f64, f64, f64, f64)| {
-        let inside: Vec<&crate::build::network::Reach> = reaches
+        let inside: Vec<&crate::planet::network::Reach> = reaches
             .iter()
             .filter(|r| {
                 let (lat, lon) = lat_lon(planet.mesh.pos(r.vertices[0]));

@@ -1,19 +1,19 @@
-//! The adaption loop on the device (paper §5): the twin of `Adapter::run_on_cpu`, pass for
-//! pass, so both backends make the same splits and collapses in the same passes.
-//!
-//! A pass records its splits, the state update of the changed mesh, the split-list compaction
-//! (whose chain flags are the demanded edges), the collapse candidates and collapses (which
-//! decide the edges they restore), and the split list of the coarsened mesh in one submission,
-//! and reads back four counts. Compaction runs on the device too. The mesh is read back once,
-//! at the end, and stays on the device (`Resident`) for the next run unless the host copy
-//! changes first; the spatial order between cameras (a sort, rare: once the mesh appended more
-//! than it had ordered) is computed on the host copy, and the device copy follows its new ids.
+//! The device backend of the adaption loop (paper §5): [`DevicePasses`] works the passes of
+//! `adapt/run.rs` on the device, each recorded as one submission — its splits, the state update
+//! of the changed mesh, the split-list compaction (whose chain flags are the demanded edges), the
+//! collapse candidates and collapses (which decide the edges they restore), and the split list
+//! of the coarsened mesh — that reads back four counts. Compaction runs on the device too. The
+//! mesh is read back once, at the end, and stays on the device (`Resident`) for the next run
+//! unless the host copy changes first; the spatial order between cameras (a sort, rare: once
+//! the mesh appended more than it had ordered) is computed on the host copy, and the device copy
+//! follows its new ids.
 
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
-use crate::adapt::compact::N_ALLOC;
-use crate::adapt::{lap, AdaptStats, Adapter, View, MAX_PASSES};
+use crate::adapt::run::{self, Look, Passes};
+use crate::adapt::{lap, AdaptStats, Adapter, StageTimes, View};
 use crate::mesh::{Mesh, Renumbering};
+use crate::params::Params;
 use std::time::Instant;
 
 /// The device copy of an adapter's mesh: equal to the host copy, or, with `ahead`, the newer
@@ -31,9 +31,82 @@ impl Clone for Resident {
     }
 }
 
+/// A mesh being adapted on the device, and the counts its last submission read back.
+struct DevicePasses<'a> {
+    gpu: &'a GpuAdaption,
+    dm: DeviceMesh,
+    params: &'a Params,
+    radius: f64,
+    guide: Option<&'a std::sync::Arc<crate::mesh::guide::Guide>>,
+    /// Edges the next pass splits.
+    ready: usize,
+}
+
+impl Passes for DevicePasses<'_> {
+    type Error = GpuError;
+
+    fn faces(&self) -> usize {
+        self.dm.lens.2
+    }
+
+    fn decide(&mut self, view: &View, times: &mut StageTimes) -> Result<usize, GpuError> {
+        let mut t = Instant::now();
+        let [ready, wanted, ..] = decide(self.gpu, &self.dm, view)?;
+        self.ready = ready;
+        lap(&mut t, &mut times.state);
+        Ok(wanted)
+    }
+
+    fn ready(&mut self, _times: &mut StageTimes) -> Result<usize, GpuError> {
+        Ok(self.ready)
+    }
+
+    fn pass(
+        &mut self,
+        view: &View,
+        split: bool,
+        look: Option<Look>,
+        times: &mut StageTimes,
+    ) -> Result<usize, GpuError> {
+        let (gpu, mut t) = (self.gpu, Instant::now());
+        let splits = if split { self.ready } else { 0 };
+        if splits > 0 {
+            self.dm.reserve_splits(gpu, splits)?;
+        }
+        let mut sub = gpu.submission();
+        if splits > 0 {
+            let terrain = super::split::Terrain { params: self.params, radius: self.radius, guide: self.guide };
+            gpu.split.encode(gpu, &mut sub, &mut self.dm, terrain, splits);
+            gpu.state.encode(gpu, &mut sub, &self.dm, view);
+        }
+        gpu.select.encode(gpu, &mut sub, &self.dm);
+        if let Some(look) = look {
+            gpu.collapse.encode(gpu, &mut sub, &self.dm, view, look.among_apexes, look.everywhere_if_none);
+            gpu.select.encode(gpu, &mut sub, &self.dm);
+        }
+        let counts = sub.finish(gpu, &self.dm)?;
+        self.ready = counts[0];
+        lap(&mut t, if look.is_some() { &mut times.collapse } else { &mut times.split });
+        Ok(if look.is_some() { counts[2] + counts[3] } else { 0 })
+    }
+
+    fn compact(&mut self, dead_faces: usize, times: &mut StageTimes) -> Result<(), GpuError> {
+        let mut t = Instant::now();
+        let (nv, ne, nf) = self.dm.lens;
+        let n = dead_faces / 2;
+        let live = (nv - n, ne - 3 * n, nf - 2 * n);
+        let mut sub = self.gpu.submission();
+        let out = self.gpu.compact.encode(self.gpu, &mut sub, &self.dm, live)?;
+        sub.finish(self.gpu, &out)?;
+        self.dm = out;
+        lap(&mut t, &mut times.compact);
+        Ok(())
+    }
+}
+
 impl Adapter {
-    /// [`Adapter::run`] with every stage on `gpu`. On an error the host mesh is still the one
-    /// the run started from.
+    /// [`Adapter::run`] on `gpu`. On an error the host mesh is still the one the run started
+    /// from.
     pub(crate) fn run_on_device(
         &mut self,
         gpu: &GpuAdaption,
@@ -42,102 +115,27 @@ impl Adapter {
         refine_only: bool,
         stats: &mut AdaptStats,
     ) -> Result<bool, GpuError> {
-        let mut t = Instant::now();
-        let mut dm = match self.resident.mesh.take() {
+        let dm = match self.resident.mesh.take() {
             Some(dm) => dm,
             None => upload(gpu, &self.mesh)?,
         };
-        let [mut ready, wanted, ..] = decide(gpu, &dm, view)?;
-        lap(&mut t, &mut stats.stage_ms.state);
-        let over = |faces: usize| cap.is_some_and(|c| faces > c);
-        if refine_only && over(dm.lens.2 + 2 * wanted) {
-            self.resident.mesh = Some(dm);
-            return Ok(false);
-        }
-        let mut converged = false;
-        let mut changed = false;
-        let mut dead_faces = 0;
-        let mut look_for_collapses = true;
-        // Whether candidates are looked for only among the apexes the last collapses marked.
-        let mut among_apexes = false;
-        for _ in 0..MAX_PASSES {
-            stats.passes += 1;
-            let over_cap = over(dm.lens.2 - dead_faces);
-            if refine_only && over_cap {
-                break;
-            }
-            let splits = if over_cap { 0 } else { ready };
-            // As on the CPU: a sub-refinement's ready splits are all in the target's mesh.
-            if refine_only && over(dm.lens.2 - dead_faces + 2 * splits) {
-                break;
-            }
-            let collapse_step = !refine_only && (look_for_collapses || splits == 0);
-            if splits == 0 && !collapse_step {
-                converged = true;
-                break;
-            }
-            if splits > 0 {
-                dm.reserve_splits(gpu, splits)?;
-            }
-            let mut sub = gpu.submission();
-            if splits > 0 {
-                let terrain = super::split::Terrain {
-                    params: &self.params,
-                    radius: self.mesh.radius,
-                    guide: self.base.guide.as_ref(),
-                };
-                gpu.split.encode(gpu, &mut sub, &mut dm, terrain, splits);
-                gpu.state.encode(gpu, &mut sub, &dm, view);
-            }
-            gpu.select.encode(gpu, &mut sub, &dm);
-            if collapse_step {
-                gpu.collapse.encode(gpu, &mut sub, &dm, view, among_apexes, splits == 0 && among_apexes);
-                gpu.select.encode(gpu, &mut sub, &dm);
-            }
-            let counts = sub.finish(gpu, &dm)?;
-            ready = counts[0];
-            let collapses = if collapse_step { counts[2] + counts[3] } else { 0 };
-            lap(&mut t, if collapse_step { &mut stats.stage_ms.collapse } else { &mut stats.stage_ms.split });
-            among_apexes |= collapse_step;
-            if collapses > 0 {
-                dead_faces += 2 * collapses;
-                if dead_faces > N_ALLOC.max(dm.lens.2 / 4) {
-                    // As on the CPU: squeeze the holes out now, and decide every edge again.
-                    dm = self.compact_on_device(gpu, dm, dead_faces)?;
-                    dead_faces = 0;
-                    among_apexes = false;
-                    lap(&mut t, &mut stats.stage_ms.compact);
-                    ready = decide(gpu, &dm, view)?[0];
-                    lap(&mut t, &mut stats.stage_ms.state);
-                }
-            }
-            look_for_collapses = collapses > 0;
-            stats.splits += splits;
-            stats.collapses += collapses;
-            changed |= splits + collapses > 0;
-            if splits == 0 && collapses == 0 {
-                converged = !over_cap;
-                break;
-            }
-            if !over_cap && over(dm.lens.2 - dead_faces) {
-                look_for_collapses = true;
-                among_apexes = false;
-            }
-        }
-        if dead_faces > 0 {
-            dm = self.compact_on_device(gpu, dm, dead_faces)?;
-            lap(&mut t, &mut stats.stage_ms.compact);
+        let guide = self.base.guide.as_ref();
+        let mut passes = DevicePasses { gpu, dm, params: &self.params, radius: self.mesh.radius, guide, ready: 0 };
+        let outcome = run::adapt(&mut passes, view, cap, refine_only, stats)?;
+        let dm = passes.dm;
+        if let Some(faces) = outcome.compacted_to {
+            self.ordered_faces = self.ordered_faces.min(faces);
         }
         // A result over the face cap is usually thrown away (the budget search goes coarser):
         // it is read back only if the caller keeps it (`Adapter::read_back_mesh`).
-        let wanted = cap.is_none_or(|c| converged && dm.lens.2 <= c);
-        if changed && wanted {
+        let wanted = cap.is_none_or(|c| outcome.converged && dm.lens.2 <= c);
+        if outcome.changed && wanted {
             self.mesh = download(gpu, &dm, self.mesh.radius)?;
             self.mesh.guide = self.base.guide.clone();
             self.mesh.channels = self.base.channels.clone();
         }
-        self.resident = Resident { mesh: Some(dm), ahead: changed && !wanted };
-        Ok(converged)
+        self.resident = Resident { mesh: Some(dm), ahead: outcome.changed && !wanted };
+        Ok(outcome.converged)
     }
 
     /// Takes the device copy of the mesh (after [`Adapter::sync_host`], so equal to it), for a
@@ -185,24 +183,6 @@ impl Adapter {
                 self.resident = Resident::default();
             }
         }
-    }
-
-    /// `dm` without the entities `dead_faces / 2` collapses removed, as [`Adapter::compact`]
-    /// leaves the host mesh (keeping the order).
-    fn compact_on_device(
-        &mut self,
-        gpu: &GpuAdaption,
-        dm: DeviceMesh,
-        dead_faces: usize,
-    ) -> Result<DeviceMesh, GpuError> {
-        let (nv, ne, nf) = dm.lens;
-        let n = dead_faces / 2;
-        let live = (nv - n, ne - 3 * n, nf - 2 * n);
-        let mut sub = gpu.submission();
-        let out = gpu.compact.encode(gpu, &mut sub, &dm, live)?;
-        sub.finish(gpu, &out)?;
-        self.ordered_faces = self.ordered_faces.min(live.2);
-        Ok(out)
     }
 
     /// Makes the device copy follow `order`, which the host copy (equal to it, between cameras)

@@ -6,8 +6,11 @@
 //! `e3 = (m, b)`, `e2 = (m, t)` and `e4 = (m, d)`; `f1` and `f2` keep the halves at `a`, the new
 //! faces `f3` and `f4` take the halves at `b`.
 
-use super::batch::Buffers;
-use super::{Diamond, Edge, EdgeKind, FaceKind, Mesh, Vertex};
+pub mod altitude;
+pub mod position;
+
+use crate::mesh::batch::Buffers;
+use crate::mesh::{Diamond, Edge, EdgeKind, FaceKind, Mesh, Vertex};
 use glam::DVec3;
 
 /// Where a split happens: the edge, its end points and the corners opposite it.

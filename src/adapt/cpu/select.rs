@@ -1,19 +1,10 @@
-//! Parallel edge splits (paper §5.3, Algorithm 2): compaction of the split list, then one
-//! parallel pass in which each split computes its new vertex from its four neighbours
-//! (positions by eq. 2 / eq. 7–9, altitudes by step 6 and eq. 10–12) and makes the topology
-//! change.
-//!
-//! The paper's step 7 (normals of `f1..f4` and of the new vertex) is not a split's work here: the
-//! paper keeps normals for its renderer (12 bytes a face, 24 a vertex), while every consumer of
-//! the adapted mesh (view glb, tiles, snapshots) takes area-weighted vertex normals of the final
-//! mesh from its `f64` positions (`export::surface_normals`), which costs no memory per vertex
-//! and cannot go stale after a collapse.
+//! Split-list compaction (paper §5.3, Algorithm 2 steps 1–2): the edges a pass splits, every
+//! wanted edge that is the refinement edge of both its faces and, for the others, the end of
+//! their chain of blocking refinement edges; and the demanded edges (the wanted ones and their
+//! chains) that no collapse may undo. The device twin is `adapt/gpu/select.rs` with
+//! `shaders/adapt/select.wgsl`.
 
-use super::camera::View;
-use super::state::wants_edge;
-use crate::mesh::altitude::split_vertex;
 use crate::mesh::Mesh;
-use crate::params::Params;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -164,21 +155,6 @@ fn merge_sorted(a: &[u32], b: &[u32]) -> Vec<u32> {
     out.extend_from_slice(&a[i..]);
     out.extend_from_slice(&b[j..]);
     out
-}
-
-/// Splits the given ready edges (see [`Mesh::split_edges`]): each new vertex is computed from its
-/// diamond and written with its edges and faces in the same parallel pass, and each of the four
-/// edges is asked right there whether it wants a split for `view` (the state update of the
-/// edges a split makes or changes, while their end points are in cache). Returns the answers
-/// for `[e1, e2, e3, e4]`, split by split; the split edges' slots now hold their first halves.
-pub fn apply_splits(mesh: &mut Mesh, ready: &[u32], params: &Params, view: &View) -> Vec<[bool; 4]> {
-    super::compact::make_room(mesh, ready.len());
-    // SAFETY: the split list holds distinct ready edges of this mesh ([`Selection::select`]).
-    let guide = mesh.guide.clone();
-    let guide = guide.as_deref();
-    unsafe {
-        mesh.split_edges_judged(ready, |d| split_vertex(d, params, guide), |edge, mid| wants_edge(view, edge, mid))
-    }
 }
 
 #[cfg(test)]

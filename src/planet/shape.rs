@@ -2,7 +2,7 @@
 //! eq. 2 and lifted with eq. 1, to the requested face count, and further inside a map's bounds
 //! until edges are as short as the map's detail needs.
 
-use crate::mesh::terrain::{lift, split_seed, weighted_position, well_shaped};
+use crate::mesh::split::position::{lift, split_seed, weighted_position, well_shaped};
 use crate::mesh::{split_kinds, EdgeKind, Mesh, Vertex};
 use crate::rng::{mix32, Sequence};
 use glam::DVec3;

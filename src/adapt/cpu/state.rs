@@ -6,7 +6,7 @@
 //! vertex collapses only when its four faces are still those of its own split, i.e. all of
 //! `e1..e4` share one split level, and when no edge of those faces wants a split.
 
-use super::camera::View;
+use crate::adapt::camera::View;
 use crate::mesh::prefetch::{prefetch, prefetch_vertex};
 use crate::mesh::{CollapseSite, Edge, EdgeKind, Mesh, VertexFlags};
 use glam::DVec3;
@@ -77,7 +77,7 @@ pub fn update_after_collapses(mesh: &Mesh, view: &View, flags: &mut [bool], site
 }
 
 /// Vertices that may collapse now: made by a split, their four faces untouched since, no edge of
-/// those faces demanded (see [`super::split::demanded`]), and the edge they were split from no longer wanting one.
+/// those faces demanded (see [`super::select::demanded`]), and the edge they were split from no longer wanting one.
 /// Looks at the vertices `among`, or at all of them.
 pub fn collapse_candidates(mesh: &Mesh, view: &View, demanded: &[bool], among: Option<&[u32]>) -> Vec<CollapseSite> {
     let check = |v: u32| {

@@ -99,7 +99,7 @@ pub fn outlines(mesh: &Mesh, lake_of: &[u32], count: usize) -> Vec<Vec<Vec<DVec3
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::build::shape::octahedron;
+    use crate::planet::shape::octahedron;
 
     #[test]
     fn a_lake_at_a_vertex_is_ringed_by_its_edge_midpoints() {

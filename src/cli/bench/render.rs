@@ -2,16 +2,16 @@
 //! vertex preparation, wgpu drawing with read-back, PNG encoding) for orbit and ground views at
 //! 1024x768 and 1920x1080, on whatever adapter wgpu finds.
 
-use crate::adapt::{Adapter, Camera};
-use crate::bench_adapt::{ground_camera, local_top};
-use crate::build::continents::direction;
-use crate::build::{build_planet, PlanetSpec};
-use crate::render::{self, scene, ImageFormat, Shot};
 use glam::DVec3;
+use riverworld::adapt::flight::{ground_camera, local_top};
+use riverworld::adapt::{Adapter, Camera};
+use riverworld::geo::direction;
+use riverworld::planet::{build_planet, PlanetSpec};
+use riverworld::render::{self, scene, ImageFormat, Shot};
 use std::time::Instant;
 
 /// Face budget of a snapshot, as `render.png` uses without `max_faces`.
-const FACES: usize = crate::server::resources::DEFAULT_MAX_FACES;
+const FACES: usize = riverworld::server::resources::DEFAULT_MAX_FACES;
 
 fn resized(cam: &Camera, width: u32, height: u32) -> Camera {
     Camera { width, height, ..cam.clone() }
@@ -31,7 +31,8 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
         }
     };
     let planet = build_planet(spec, &mut |_, _| {}).expect("benchmark planet builds");
-    let (gpu, choice) = crate::adapt::gpu::select(crate::adapt::gpu::Backend::Auto).unwrap_or((None, String::new()));
+    let (gpu, choice) =
+        riverworld::adapt::gpu::select(riverworld::adapt::gpu::Backend::Auto).unwrap_or((None, String::new()));
     let p = &spec.params;
     let r = p.radius_m;
     let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 8.0, 40.0, r)

@@ -5,12 +5,13 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
-use super::guide::Guide;
-use super::terrain::{
+use super::position::{
     altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
     weighted_position, well_shaped_towards,
 };
-use super::{split_kinds, Diamond, EdgeKind, Tangent, Vertex, VertexFlags};
+use super::split_kinds;
+use crate::mesh::guide::Guide;
+use crate::mesh::{Diamond, EdgeKind, Tangent, Vertex, VertexFlags};
 use crate::params::Params;
 use crate::rng::{salt, unit};
 use glam::DVec3;

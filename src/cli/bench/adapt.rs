@@ -2,64 +2,14 @@
 //! recorded fly-through over the Earth planet, with the paper's columns — faces, memory, adapt
 //! time, triangles per second — plus the static-view state pass rate.
 
-use crate::adapt::{state, Adapter, Camera, View};
-use crate::build::continents::direction;
-use crate::build::{build_planet, Planet, PlanetSpec};
-use crate::mesh::VertexFlags;
 use glam::DVec3;
+use riverworld::adapt::cpu::state;
+use riverworld::adapt::flight::{fly_through, ground_camera, local_top, FLY_THROUGH_FACES};
+use riverworld::adapt::{Adapter, Camera, View};
+use riverworld::geo::direction;
+use riverworld::mesh::VertexFlags;
+use riverworld::planet::{build_planet, Planet, PlanetSpec};
 use std::time::Instant;
-
-/// Highest ground or water altitude (above the base sphere) among the base-mesh vertices within
-/// `reach` metres of (lat, lon): a safe floor for a camera there.
-pub fn local_top(mesh: &crate::mesh::Mesh, lat: f64, lon: f64, reach: f64) -> f64 {
-    let p = direction(lat, lon) * mesh.radius;
-    let near = mesh.vertices.iter().filter(|v| v.p().normalize().distance(p.normalize()) * mesh.radius < reach);
-    let top = near.map(|v| v.ground.max(v.water)).fold(f64::MIN, f64::max);
-    if top == f64::MIN {
-        mesh.vertices.iter().map(|v| v.ground.max(v.water)).fold(0.0, f64::max)
-    } else {
-        top
-    }
-}
-
-/// A camera `height` m above the altitude `sea` (above the base sphere) at (lat, lon), looking
-/// `ahead` m along the ground toward the heading `bearing_deg` (0 = north), at 1920x1080.
-pub fn ground_camera(radius: f64, sea: f64, lat: f64, lon: f64, height: f64, ahead: f64, bearing_deg: f64) -> Camera {
-    let up = direction(lat, lon);
-    let north = (DVec3::Z - up * up.z).normalize_or(DVec3::X);
-    let east = north.cross(up);
-    let b = bearing_deg.to_radians();
-    let heading = north * b.cos() + east * b.sin();
-    let eye = up * (radius + sea + height);
-    let target = (up + heading * (ahead / radius)).normalize() * (radius + sea);
-    Camera::new(
-        eye,
-        target,
-        None,
-        60.0,
-        1920,
-        1080,
-        crate::adapt::camera::DEFAULT_LAND_PX,
-        crate::adapt::camera::DEFAULT_WATER_PX,
-        radius,
-    )
-    .expect("benchmark camera is valid")
-}
-
-/// Face budget of each fly-through frame: its lowest frames would need tens of GB unbounded.
-pub const FLY_THROUGH_FACES: usize = 2_000_000;
-
-/// The fly-through: from orbit down to a river valley in `frames` steps.
-pub fn fly_through(radius: f64, sea: f64, lat: f64, lon: f64, frames: usize) -> Vec<Camera> {
-    (0..frames)
-        .map(|i| {
-            let t = i as f64 / (frames - 1).max(1) as f64;
-            let height = 2.0e7 * (1.0 - t) + 1500.0 * t;
-            let height = height.min(2.0e7 * (0.05f64).powf(t * 4.0)).max(1500.0);
-            ground_camera(radius, sea, lat - 2.0 * (1.0 - t), lon, height, height * 2.0 + 5000.0, 10.0 * t)
-        })
-        .collect()
-}
 
 fn mb(bytes: f64) -> f64 {
     bytes / (1024.0 * 1024.0)
@@ -86,7 +36,7 @@ impl Scene {
             .filter(|&v| !planet.mesh.vertices[v as usize].flags.contains(VertexFlags::MOUTH))
             .max_by(|&a, &b| graph.tributaries(a).cmp(&graph.tributaries(b)).then(b.cmp(&a)))
             .unwrap_or(0);
-        let (rlat, rlon) = crate::build::continents::lat_lon(planet.mesh.pos(river));
+        let (rlat, rlon) = riverworld::planet::continents::lat_lon(planet.mesh.pos(river));
         let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 2.0, 10.0, r)
             .expect("orbit camera");
         let top1 = local_top(&planet.mesh, rlat, rlon, 150_000.0);
@@ -119,9 +69,9 @@ pub fn run(spec: &PlanetSpec) {
         let s = a.adapt(cam, None);
         let made = s.faces.saturating_sub(planet.stats.faces);
         // The same camera again, as frame-to-frame adaption sees a static view: the adapter
-        // puts the mesh it keeps in spatial order first (see adapt/compact.rs).
+        // puts the mesh it keeps in spatial order first (see adapt/cpu/compact.rs).
         let again = a.adapt(cam, None);
-        let view = View::new(cam, r, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh));
+        let view = View::new(cam, r, p.min_edge_length_m, riverworld::adapt::terrain_top(p, &planet.mesh));
         let t = Instant::now();
         let reps = 5;
         for _ in 0..reps {
@@ -166,8 +116,8 @@ pub fn run(spec: &PlanetSpec) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::maps::{Map, MapKind, MapLimits};
-    use crate::params::Params;
+    use riverworld::maps::{Map, MapKind, MapLimits};
+    use riverworld::params::Params;
 
     /// The benchmark's views of the Earth planet converge: a split that never shortens its edge
     /// (a wall whose new vertex copies one end's altitude) showed up here as 400 passes of ever

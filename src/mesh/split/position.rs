@@ -3,7 +3,7 @@
 //! All random numbers come from the new vertex's seed `s_nv = s_ev1 + s_ev2`, so the same edge
 //! always yields the same vertex.
 
-use super::{Diamond, EdgeKind};
+use crate::mesh::{Diamond, EdgeKind};
 use crate::rng::{salt, uniform, unit};
 use glam::DVec3;
 

@@ -2,12 +2,13 @@
 //! and on the wgpu compute backend over the same views, in one run, with the device's stage
 //! times (state update, split-list compaction, splits) where the adapter has timestamp queries.
 
-use crate::adapt::gpu::{self, Backend, DeviceTimes, GpuAdaption};
-use crate::adapt::{state, AdaptStats, Adapter, Camera, View};
-use crate::bench_adapt::Scene;
-use crate::build::PlanetSpec;
-use crate::mesh::Mesh;
-use crate::params::Params;
+use super::adapt::Scene;
+use riverworld::adapt::cpu::state;
+use riverworld::adapt::gpu::{self, Backend, DeviceTimes, GpuAdaption};
+use riverworld::adapt::{AdaptStats, Adapter, Camera, View};
+use riverworld::mesh::Mesh;
+use riverworld::params::Params;
+use riverworld::planet::PlanetSpec;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -85,7 +86,7 @@ pub fn run(spec: &PlanetSpec) {
     let _ = gpu::edge_wants(
         &g,
         &planet.mesh,
-        &View::new(&views[0].1, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh)),
+        &View::new(&views[0].1, p.radius_m, p.min_edge_length_m, riverworld::adapt::terrain_top(p, &planet.mesh)),
     );
     println!(
         "Adaption from the base mesh ({} faces). Every stage on the device: state update, split-list \
@@ -97,7 +98,7 @@ pub fn run(spec: &PlanetSpec) {
     println!("|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut cases: Vec<(String, Vec<Camera>, Option<usize>)> =
         views.iter().map(|(n, c)| (n.to_string(), vec![c.clone()], None)).collect();
-    let budget = crate::bench_adapt::FLY_THROUGH_FACES;
+    let budget = riverworld::adapt::flight::FLY_THROUGH_FACES;
     cases.push((format!("fly-through, {} frames, at most {budget} faces (sum)", path.len()), path, Some(budget)));
     let mut finals = Vec::new();
     for (name, cams, max_faces) in &cases {
@@ -123,7 +124,7 @@ pub fn run(spec: &PlanetSpec) {
     println!("|---|---:|---:|---:|---:|---:|---:|");
     for (name, cam, mesh) in finals {
         let Some(cam) = cam else { continue };
-        let view = View::new(&cam, p.radius_m, p.min_edge_length_m, crate::adapt::terrain_top(p, &planet.mesh));
+        let view = View::new(&cam, p.radius_m, p.min_edge_length_m, riverworld::adapt::terrain_top(p, &planet.mesh));
         let cpu_ms = median_ms(5, || {
             std::hint::black_box(state::edge_wants(&mesh, &view));
         });

@@ -2,10 +2,10 @@
 //! mesh") for random planets and Earth maps, then view-dependent adaption on the Earth planet
 //! (`bench_adapt`), and prints Markdown tables.
 
-use crate::build::{build_planet, PlanetSpec};
-use crate::generate::{load_map, MapSource};
-use crate::maps::MapLimits;
-use crate::params::Params;
+use riverworld::input::{load_map, MapSource};
+use riverworld::maps::MapLimits;
+use riverworld::params::Params;
+use riverworld::planet::{build_planet, PlanetSpec};
 use std::path::Path;
 use std::sync::Arc;
 use std::time::Instant;
@@ -57,6 +57,10 @@ pub enum Table {
 
 /// Prints the chosen tables (all when `only` is empty); builds run every case `runs` times and
 /// report the median.
+mod adapt;
+mod backends;
+mod render;
+
 pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
     let wants = |t: Table| only.is_empty() || only.contains(&t);
     if wants(Table::Build) {
@@ -72,15 +76,15 @@ pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
     };
     if wants(Table::Adapt) {
         println!("\n### Adaption, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
-        crate::bench_adapt::run(&spec);
+        adapt::run(&spec);
     }
     if wants(Table::Backends) {
         println!("\n### Adaption backends, Earth bitmap 1024x512, 1920x1080, default land/water pixel targets\n");
-        crate::bench_backends::run(&spec);
+        backends::run(&spec);
     }
     if wants(Table::Render) {
         println!("\n### Snapshots (render.png), Earth bitmap 1024x512, default targets, median of {runs}\n");
-        crate::bench_render::run(&spec, runs);
+        render::run(&spec, runs);
     }
 }
 
