@@ -1,13 +1,13 @@
 // Vertex collapses (paper §5.4, Algorithm 3): the twin of `Buffers::collapse` in
 // `src/mesh/batch.rs`, one invocation per vertex marked `MARK_COLLAPSE` by the state update
-// (`collapse_candidates` in `adapt_state.wgsl`). Race-free as the paper argues: a candidate owns
+// (`collapse_candidates` in `state.wgsl`). Race-free as the paper argues: a candidate owns
 // its vertex, four edges and four faces, disjoint from every other candidate's; what neighbours
 // share is an outer edge, of which each collapse relinks only its own face's slot, and a corner
 // vertex, whose edge link only the owner of the linked edge moves. The restored faces' newest
 // vertices get `MARK_LOOK`: only they can have become collapsible. Split wishes are brought up
-// to date as by `update_after_collapses` (`src/adapt/state.rs`): the removed edges want nothing
-// and the restored edge is decided by the criterion of `adapt_view.wgsl` (appended). Layouts:
-// `adapt_mesh.wgsl` (prepended).
+// to date as by `update_after_collapses` (`src/adapt/cpu/state.rs`): the removed edges want nothing
+// and the restored edge is decided by the criterion of `view.wgsl` (appended). Layouts:
+// `layout.wgsl` (prepended).
 
 @group(0) @binding(0) var<storage, read_write> vertices: array<Vertex>;
 @group(0) @binding(1) var<storage, read_write> edges: array<Edge>;

@@ -1,8 +1,8 @@
 // Buffer compaction (paper §5.5): the twin of `Mesh::compact` in `src/mesh/order.rs`. For each
 // of the vertex, edge and face buffers, the live entities are flagged (`live_*`), numbered in
-// their old order by the block prefix sum of `adapt_scan.wgsl` (appended), the number written
+// their old order by the block prefix sum of `scan.wgsl` (appended), the number written
 // over the flag (`number`; dead ones get `DEAD`), and every live entity moved to its number in
-// fresh buffers with its references renumbered (`move_*`). Layouts: `adapt_mesh.wgsl`.
+// fresh buffers with its references renumbered (`move_*`). Layouts: `layout.wgsl`.
 
 @group(0) @binding(0) var<storage, read> old_vertices: array<Vertex>;
 @group(0) @binding(1) var<storage, read> old_edges: array<Edge>;

@@ -1,6 +1,9 @@
-// The mesh buffers of `src/mesh/mod.rs` (`Vertex`, `Edge`, `Face`, paper Table 3) as the
-// adaption shaders read them, and the arithmetic they share. Prepended to every
-// `adapt_*.wgsl` stage, so each layout is spelt out once on the device side.
+// Every layout the adaption shaders read, spelt out once on the device side and prepended to
+// every stage (`src/adapt/gpu/shaders.rs`): the mesh buffers of `src/mesh/mod.rs` (`Vertex`,
+// `Edge`, `Face`, paper Table 3) and the elevation map's `GuideFace`, and the parameter blocks
+// of `src/adapt/gpu/layout.rs` (`View`, `SplitParams`, `Sweep`, `Grid`). A test of `layout.rs`
+// checks each struct's size and member offsets against its Rust twin. Also the constants and
+// arithmetic the stages share.
 //
 // Every f64 operation follows the CPU code (glam's `DVec3`, `src/rng.rs`) operation for
 // operation and in the same order, so a device that rounds f64 arithmetic and `sqrt` correctly
@@ -34,7 +37,7 @@ struct Face {
     e: array<u32, 3>,
 }
 
-// A vertex-wise dispatch of the collapse stages (`Sweep` of `src/adapt/gpu/collapse.rs`).
+// A vertex-wise dispatch of the collapse stages (`Sweep`).
 struct Sweep {
     vertices: u32,
     // Invocations per row of the dispatch grid (vertex = x + y * row).
@@ -42,6 +45,88 @@ struct Sweep {
     // 1: look only at vertices marked `MARK_LOOK` (the apexes the last collapses restored).
     among: u32,
     _pad: u32,
+}
+
+// The view of the state update and of the collapses' restored edges (`GpuView`).
+struct View {
+    eye: array<f64, 3>,
+    planes: array<array<f64, 3>, 5>,
+    per_unit: array<f64, 5>,
+    eye_dir: array<f64, 3>,
+    horizon: f64,
+    c_land: f64,
+    c_water: f64,
+    min_len: f64,
+    c_lod: f64,
+    edges: u32,
+    row: u32,
+}
+
+// The terrain parameters and batch shape of the splits (`SplitParams`).
+struct SplitParams {
+    radius: f64,
+    sea_level: f64,
+    riverbed_edge_height: f64,
+    max_river_depth: f64,
+    min_river_length: f64,
+    max_river_altitude: f64,
+    max_mountain_altitude: f64,
+    riverbed_slope: f64,
+    near_river_slope: f64,
+    ground_slope: f64,
+    river_slope: f64,
+    // `2 sqrt(3)` as the CPU computes it, and `MIN_SPLIT_QUALITY`.
+    quality_scale: f64,
+    min_quality: f64,
+    // The constants of the terrain arithmetic, read at run time: compilers rewrite expressions
+    // with literal constants (lavapipe folded `(1 - a) + b` into `(b - a) + 1` and a constant
+    // factor into a neighbouring sum), which round differently; they cannot rewrite with values
+    // they do not know. `SplitParams::new` gives the CPU's values.
+    one: f64,
+    half: f64,
+    quarter: f64,
+    three_quarters: f64,
+    sea_roughness: f64,
+    roughness: f64,
+    roughness_length: f64,
+    sea_roughness_length: f64,
+    tangent_scale: f64,
+    tangent_offset: f64,
+    // `Guide::min_edge_m` (`src/mesh/guide.rs`): continent splits of edges at least this long
+    // take the elevation map's ground.
+    guide_min_edge: f64,
+    // Slots where the new vertices, edges and faces start.
+    vertices: u32,
+    edges: u32,
+    faces: u32,
+    // Splits in the list, and invocations per row of the dispatch (split = x + y * row).
+    count: u32,
+    row: u32,
+    // The guide's faces (0: the planet has no elevation map) and cells along their sides.
+    guide_faces: u32,
+    guide_side: u32,
+    _pad: u32,
+}
+
+// `GuideFace` of `src/mesh/guide.rs`.
+struct GuideFace {
+    centre: vec3<f64>,
+    x0: f64,
+    east: vec3<f64>,
+    y0: f64,
+    north: vec3<f64>,
+    step: f64,
+}
+
+// The shape of a block prefix sum (`ScanGrid`).
+struct Grid {
+    // Items to scan.
+    items: u32,
+    // Invocations per row of an item-wise dispatch (item = x + y * row).
+    row: u32,
+    // Blocks of `BLOCK` items, and workgroups per row of the block-wise dispatch.
+    blocks: u32,
+    block_row: u32,
 }
 
 const NONE: u32 = 0xffffffffu;

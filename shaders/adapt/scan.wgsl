@@ -6,16 +6,6 @@
 // scheduling the flagged items keep their order. Appended to the stages that compact: each
 // declares `grid` and `sums`.
 
-struct Grid {
-    // Items to scan.
-    items: u32,
-    // Invocations per row of an item-wise dispatch (item = x + y * row).
-    row: u32,
-    // Blocks of `BLOCK` items, and workgroups per row of the block-wise dispatch.
-    blocks: u32,
-    block_row: u32,
-}
-
 const GROUP: u32 = 256u;
 const PER_THREAD: u32 = 4u;
 const BLOCK: u32 = 1024u;

@@ -5,8 +5,8 @@
 // chain already took (one atomic flag per edge), so shared parts are walked once.
 // The ready edges are then compacted into a list in edge order by a prefix sum over blocks of
 // `BLOCK` edges, so the list, and the slots the splits take, are the CPU's whatever the
-// scheduling. Layouts: `adapt_mesh.wgsl` (prepended); the prefix sum and its `Grid` (the
-// `ScanGrid` of `src/adapt/gpu/mod.rs`): `adapt_scan.wgsl` (appended).
+// scheduling. Layouts: `layout.wgsl` (prepended); the prefix sum and its `Grid` (the
+// `ScanGrid` of `src/adapt/gpu/layout.rs`): `scan.wgsl` (appended).
 
 @group(0) @binding(0) var<storage, read> edges: array<Edge>;
 @group(0) @binding(1) var<storage, read> faces: array<Face>;

@@ -10,62 +10,7 @@
 // words no other invocation writes, and the fields the splits read of their neighbours
 // (positions, altitudes, seeds, tangents, flags) are not written by any split.
 //
-// Layouts: `adapt_mesh.wgsl` (prepended) and `SplitParams` of `src/adapt/gpu/split.rs`.
-
-struct SplitParams {
-    radius: f64,
-    sea_level: f64,
-    riverbed_edge_height: f64,
-    max_river_depth: f64,
-    min_river_length: f64,
-    max_river_altitude: f64,
-    max_mountain_altitude: f64,
-    riverbed_slope: f64,
-    near_river_slope: f64,
-    ground_slope: f64,
-    river_slope: f64,
-    // `2 sqrt(3)` as the CPU computes it, and `MIN_SPLIT_QUALITY`.
-    quality_scale: f64,
-    min_quality: f64,
-    // The constants of the terrain arithmetic, read at run time: compilers rewrite expressions
-    // with literal constants (lavapipe folded `(1 - a) + b` into `(b - a) + 1` and a constant
-    // factor into a neighbouring sum), which round differently; they cannot rewrite with values
-    // they do not know. `SplitParams::new` gives the CPU's values.
-    one: f64,
-    half: f64,
-    quarter: f64,
-    three_quarters: f64,
-    sea_roughness: f64,
-    roughness: f64,
-    roughness_length: f64,
-    sea_roughness_length: f64,
-    tangent_scale: f64,
-    tangent_offset: f64,
-    // `Guide::min_edge_m` (`src/mesh/guide.rs`): continent splits of edges at least this long
-    // take the elevation map's ground.
-    guide_min_edge: f64,
-    // Slots where the new vertices, edges and faces start.
-    vertices: u32,
-    edges: u32,
-    faces: u32,
-    // Splits in the list, and invocations per row of the dispatch (split = x + y * row).
-    count: u32,
-    row: u32,
-    // The guide's faces (0: the planet has no elevation map) and cells along their sides.
-    guide_faces: u32,
-    guide_side: u32,
-    _pad: u32,
-}
-
-// `GuideFace` of `src/mesh/guide.rs`.
-struct GuideFace {
-    centre: vec3<f64>,
-    x0: f64,
-    east: vec3<f64>,
-    y0: f64,
-    north: vec3<f64>,
-    step: f64,
-}
+// Layouts: `layout.wgsl` (prepended).
 
 @group(0) @binding(0) var<storage, read_write> vertices: array<Vertex>;
 @group(0) @binding(1) var<storage, read_write> edges: array<Edge>;

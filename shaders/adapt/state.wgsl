@@ -1,7 +1,7 @@
 // State update (paper §5.1, Algorithm 1): the split wish of every edge for one view, the twin
-// of `edge_wants` in `src/adapt/state.rs`, by the criterion of `adapt_view.wgsl` (appended):
+// of `edge_wants` in `src/adapt/cpu/state.rs`, by the criterion of `view.wgsl` (appended):
 // positions are the mesh's own f64 planet-centred metres, so the eye-relative vector, and with
-// it the decision, are those of the CPU. Layouts: `adapt_mesh.wgsl` (prepended).
+// it the decision, are those of the CPU. Layouts: `layout.wgsl` (prepended).
 
 @group(0) @binding(0) var<storage, read> vertices: array<Vertex>;
 @group(0) @binding(1) var<storage, read> edges: array<Edge>;
@@ -25,7 +25,7 @@ fn edge_wants(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 
 // Collapse candidates (Algorithm 1's collapse flags; the twin of `collapse_candidates` in
-// `src/adapt/state.rs`): a vertex made by a split whose four faces are still its split's
+// `src/adapt/cpu/state.rs`): a vertex made by a split whose four faces are still its split's
 // (`Mesh::collapse_site`), none of whose faces' edges is demanded (wanted, or on a wanted edge's
 // blocking chain: the chain flags the split-list compaction leaves in `seen`), and whose parent
 // edge no longer wants a split. Each invocation rewrites its own vertex's mark: `MARK_COLLAPSE`

@@ -2,21 +2,7 @@
 // `src/adapt/camera.rs`, operation for operation and in the same order, in f64 on the mesh's own
 // planet-centred positions. Appended to the stages that decide split wishes (the state update,
 // and the collapses for the edges they restore); each declares `vertices` and `view` (the
-// layout of `GpuView` in `src/adapt/gpu/state.rs`).
-
-struct View {
-    eye: array<f64, 3>,
-    planes: array<array<f64, 3>, 5>,
-    per_unit: array<f64, 5>,
-    eye_dir: array<f64, 3>,
-    horizon: f64,
-    c_land: f64,
-    c_water: f64,
-    min_len: f64,
-    c_lod: f64,
-    edges: u32,
-    row: u32,
-}
+// layout of `View` in `layout.wgsl`).
 
 fn position(v: u32) -> vec3<f64> {
     let p = vertices[v].pos;

@@ -11,7 +11,7 @@
 //! direction `d` is looked up on the face whose centre `c` it is nearest (largest `d·c`) at
 //! `x = d·e / d·c`, `y = d·n / d·c` (the face's east and north axes), bilinearly between the
 //! four cells around it. Every step is an addition, multiplication, division, comparison or
-//! `floor`, so the WGSL twin in `adapt_split.wgsl` gets the same bits. Values are `f32` metres
+//! `floor`, so the WGSL twin in `split.wgsl` gets the same bits. Values are `f32` metres
 //! relative to sea level; NaN where the map has no data or does not reach.
 
 use crate::maps::{Map, MapKind};
@@ -174,7 +174,7 @@ impl Guide {
         let at = best * (self.side * self.side) as usize + iy as usize * self.side as usize + ix as usize;
         let s = self.side as usize;
         let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
-        // Written out as `adapt_split.wgsl` computes it.
+        // Written out as `split.wgsl` computes it.
         let a = v00 + (v10 - v00) * fx;
         let b = v01 + (v11 - v01) * fx;
         let missing = [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29);

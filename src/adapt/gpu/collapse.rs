@@ -3,22 +3,9 @@
 //! (`state.rs`, `collapse_candidates` in `shaders/adapt/state.wgsl`).
 
 use super::buffers::DeviceMesh;
+use super::layout::Sweep;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission, WORKGROUP};
 use crate::adapt::View;
-use bytemuck::{Pod, Zeroable};
-
-/// A vertex-wise dispatch of the collapse stages as the shaders read it (`struct Sweep` in
-/// `shaders/adapt/layout.wgsl`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(super) struct Sweep {
-    vertices: u32,
-    /// Invocations per row of the dispatch grid (vertex = x + y * row).
-    row: u32,
-    /// 1: candidates only among the vertices the last collapses marked to look at.
-    among: u32,
-    _pad: u32,
-}
 
 impl Sweep {
     pub(super) fn new(device: &wgpu::Device, vertices: usize, among: bool) -> Sweep {
@@ -39,15 +26,7 @@ pub(super) struct CollapsePipeline {
 
 impl CollapsePipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<CollapsePipeline, super::GpuError> {
-        let module = super::shader(
-            device,
-            "adapt_collapse.wgsl",
-            &[
-                include_str!("../../../shaders/adapt/collapse.wgsl"),
-                include_str!("../../../shaders/adapt/view.wgsl"),
-                super::EDGE_HELPERS,
-            ],
-        )?;
+        let module = super::shader(device, Stage::Collapse)?;
         Ok(CollapsePipeline { pipeline: super::pipeline(device, &module, "collapse_vertices") })
     }
 

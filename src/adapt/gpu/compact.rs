@@ -4,7 +4,8 @@
 //! follows its new ids with the same moves (see `adapt/cpu/compact.rs`).
 
 use super::buffers::DeviceMesh;
-use super::{GpuAdaption, GpuError, ScanGrid, Stage, Submission};
+use super::layout::ScanGrid;
+use super::{GpuAdaption, GpuError, Stage, Submission};
 use crate::mesh::Renumbering;
 use wgpu::util::DeviceExt;
 
@@ -18,11 +19,7 @@ pub(super) struct CompactPipeline {
 
 impl CompactPipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<CompactPipeline, super::GpuError> {
-        let module = super::shader(
-            device,
-            "adapt_compact.wgsl",
-            &[include_str!("../../../shaders/adapt/compact.wgsl"), include_str!("../../../shaders/adapt/scan.wgsl")],
-        )?;
+        let module = super::shader(device, Stage::Compact)?;
         let p = |entry| super::pipeline(device, &module, entry);
         Ok(CompactPipeline {
             live: [p("live_vertices"), p("live_edges"), p("live_faces")],

@@ -1,5 +1,5 @@
 //! The wgpu compute backend of view-dependent adaption (paper §5): each stage that runs on the
-//! device has its WGSL twin in `shaders/adapt_*.wgsl`, reading the mesh buffers in the
+//! device has its WGSL twin in `shaders/adapt/<stage>.wgsl`, reading the mesh buffers in the
 //! `#[repr(C)]` layouts of `crate::mesh` (`Vertex`, `Edge`, `Face`, spelt out once for the
 //! shaders in `shaders/adapt/layout.wgsl`) through bytemuck.
 //!
@@ -24,9 +24,11 @@
 mod buffers;
 mod collapse;
 mod compact;
+mod layout;
 mod reproduce;
 mod run;
 mod select;
+mod shaders;
 mod spirv;
 mod split;
 mod state;
@@ -103,32 +105,19 @@ pub(crate) enum Stage {
 /// Compute passes of one submission that get timestamps (a pass records at most eight).
 const TIMED_PASSES: usize = 16;
 
-/// The shape of a block prefix sum as `adapt_scan.wgsl` reads it (`struct Grid`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
-pub(crate) struct ScanGrid {
-    /// Items to scan.
-    pub items: u32,
-    /// Invocations per row of an item-wise dispatch of `WORKGROUP` (item = x + y * row).
-    pub row: u32,
-    /// Blocks of `BLOCK` items, and workgroups per row of the block-wise dispatch.
-    pub blocks: u32,
-    pub block_row: u32,
-}
-
-/// Items per block of the prefix sums (`BLOCK` in `adapt_scan.wgsl`).
+/// Items per block of the prefix sums (`BLOCK` in `scan.wgsl`).
 pub(crate) const BLOCK: u32 = 1024;
 /// Workgroup size of the item-wise stages.
 pub(crate) const WORKGROUP: u32 = 256;
 
-impl ScanGrid {
+impl layout::ScanGrid {
     /// Item-wise and block-wise dispatch shapes for `items` items: the grid and the workgroups
     /// `(x, y)` of each.
-    pub(crate) fn new(device: &wgpu::Device, items: u32) -> (ScanGrid, (u32, u32), (u32, u32)) {
+    pub(crate) fn new(device: &wgpu::Device, items: u32) -> (layout::ScanGrid, (u32, u32), (u32, u32)) {
         let (gx, gy, row) = dispatch_grid(device, items.max(1), WORKGROUP);
         let blocks = items.div_ceil(BLOCK).max(1);
         let (bx, by, block_row) = dispatch_grid(device, blocks, 1);
-        (ScanGrid { items, row, blocks, block_row }, (gx, gy), (bx, by))
+        (layout::ScanGrid { items, row, blocks, block_row }, (gx, gy), (bx, by))
     }
 }
 
@@ -354,19 +343,6 @@ pub(crate) fn dispatch_grid(device: &wgpu::Device, n: u32, size: u32) -> (u32, u
     (gx, groups.div_ceil(gx), gx * size)
 }
 
-/// Edge helpers (`far_end`) of the stages that bind `edges`: split, state and collapse.
-const EDGE_HELPERS: &str = include_str!("../../../shaders/adapt/edges.wgsl");
-
-/// `shaders/adapt/layout.wgsl` followed by `sources`.
-fn stage_source(sources: &[&str]) -> String {
-    let mut full = include_str!("../../../shaders/adapt/layout.wgsl").to_string();
-    for source in sources {
-        full.push('\n');
-        full.push_str(source);
-    }
-    full
-}
-
 /// Whether `device` was opened to take the shaders as SPIR-V (requested on Vulkan only).
 fn takes_spirv(device: &wgpu::Device) -> bool {
     device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)
@@ -381,8 +357,8 @@ enum Shader {
 
 /// A stage's shader: `shaders/adapt/layout.wgsl` followed by the stage's own sources; SPIR-V
 /// without contraction where the device takes it (`spirv.rs`), else WGSL.
-fn shader(device: &wgpu::Device, label: &str, sources: &[&str]) -> Result<Shader, GpuError> {
-    let full = stage_source(sources);
+fn shader(device: &wgpu::Device, stage: Stage) -> Result<Shader, GpuError> {
+    let (full, label) = (shaders::source(stage), shaders::file_name(stage));
     if takes_spirv(device) {
         let entries = spirv::compile(&full).map_err(|e| GpuError::Device(format!("{label}: {e}")))?;
         let modules = entries

@@ -6,7 +6,8 @@
 //! [`crate::adapt::cpu::state::demanded`], which the collapse candidates read.
 
 use super::buffers::DeviceMesh;
-use super::{GpuAdaption, ScanGrid, Stage, Submission};
+use super::layout::ScanGrid;
+use super::{GpuAdaption, Stage, Submission};
 
 pub(super) struct SelectPipeline {
     walk: wgpu::ComputePipeline,
@@ -17,11 +18,7 @@ pub(super) struct SelectPipeline {
 
 impl SelectPipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<SelectPipeline, super::GpuError> {
-        let module = super::shader(
-            device,
-            "adapt_select.wgsl",
-            &[include_str!("../../../shaders/adapt/select.wgsl"), include_str!("../../../shaders/adapt/scan.wgsl")],
-        )?;
+        let module = super::shader(device, Stage::Select)?;
         Ok(SelectPipeline {
             walk: super::pipeline(device, &module, "walk_chains"),
             block_sums: super::pipeline(device, &module, "block_sums"),

@@ -199,11 +199,7 @@ mod tests {
     use super::*;
 
     fn split_stage() -> Entry {
-        let mut entries = compile(&super::super::stage_source(&[
-            include_str!("../../../shaders/adapt/split.wgsl"),
-            super::super::EDGE_HELPERS,
-        ]))
-        .unwrap();
+        let mut entries = compile(&super::super::shaders::source(super::super::Stage::Split)).unwrap();
         assert_eq!(entries.len(), 1);
         entries.pop().unwrap()
     }
@@ -245,11 +241,7 @@ mod tests {
 
     #[test]
     fn descriptors_are_numbered_as_wgpu_numbers_them_on_vulkan() {
-        let source = super::super::stage_source(&[
-            include_str!("../../../shaders/adapt/state.wgsl"),
-            include_str!("../../../shaders/adapt/view.wgsl"),
-            super::super::EDGE_HELPERS,
-        ]);
+        let source = super::super::shaders::source(super::super::Stage::State);
         let entries = compile(&source).unwrap();
         let candidates = entries.iter().find(|e| e.name == "collapse_candidates").unwrap();
         let wgsl: Vec<u32> = candidates.bindings.iter().map(|b| b.binding).collect();

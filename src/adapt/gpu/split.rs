@@ -4,54 +4,17 @@
 //! invocation per entry of the split list, writing the slots the CPU would.
 
 use super::buffers::DeviceMesh;
+use super::layout::SplitParams;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
 use crate::mesh::guide::{Guide, GuideFace};
 use crate::mesh::split::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS, SEA_ROUGHNESS_LENGTH};
 use crate::mesh::split::position::MIN_SPLIT_QUALITY;
 use crate::mesh::Tangent;
 use crate::params::Params;
-use bytemuck::{Pod, Zeroable};
+
 use std::sync::{Arc, Mutex};
 
 pub(super) const WORKGROUP: u32 = 64;
-
-/// The terrain parameters and batch shape as `adapt_split.wgsl` reads them (`SplitParams`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(super) struct SplitParams {
-    radius: f64,
-    sea_level: f64,
-    riverbed_edge_height: f64,
-    max_river_depth: f64,
-    min_river_length: f64,
-    max_river_altitude: f64,
-    max_mountain_altitude: f64,
-    riverbed_slope: f64,
-    near_river_slope: f64,
-    ground_slope: f64,
-    river_slope: f64,
-    quality_scale: f64,
-    min_quality: f64,
-    one: f64,
-    half: f64,
-    quarter: f64,
-    three_quarters: f64,
-    sea_roughness: f64,
-    roughness: f64,
-    roughness_length: f64,
-    sea_roughness_length: f64,
-    tangent_scale: f64,
-    tangent_offset: f64,
-    guide_min_edge: f64,
-    vertices: u32,
-    edges: u32,
-    faces: u32,
-    count: u32,
-    row: u32,
-    guide_faces: u32,
-    guide_side: u32,
-    _pad: u32,
-}
 
 impl SplitParams {
     fn new(
@@ -138,11 +101,7 @@ impl GuideBuffers {
 
 impl SplitPipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<SplitPipeline, super::GpuError> {
-        let module = super::shader(
-            device,
-            "adapt_split.wgsl",
-            &[include_str!("../../../shaders/adapt/split.wgsl"), super::EDGE_HELPERS],
-        )?;
+        let module = super::shader(device, Stage::Split)?;
         let no_guide = GuideBuffers::new(device, &[0; std::mem::size_of::<GuideFace>()], &[0; 4]);
         Ok(SplitPipeline {
             pipeline: super::pipeline(device, &module, "split_edges"),

@@ -2,31 +2,11 @@
 //! of [`crate::adapt::cpu::state::edge_wants`] and [`crate::adapt::cpu::state::collapse_candidates`].
 
 use super::buffers::DeviceMesh;
-use super::collapse::Sweep;
+use super::layout::{GpuView, Sweep};
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
 use crate::adapt::camera::{View, C_LOD};
-use bytemuck::{Pod, Zeroable};
 
 pub(super) const WORKGROUP: u32 = 256;
-
-/// The view as `adapt_state.wgsl` reads it (`struct View`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub struct GpuView {
-    pub eye: [f64; 3],
-    pub planes: [[f64; 3]; 5],
-    pub per_unit: [f64; 5],
-    pub eye_dir: [f64; 3],
-    pub horizon: f64,
-    pub c_land: f64,
-    pub c_water: f64,
-    pub min_len: f64,
-    pub c_lod: f64,
-    /// Edges to decide.
-    pub edges: u32,
-    /// Invocations per row of the dispatch grid (edge = x + y * row).
-    pub row: u32,
-}
 
 impl GpuView {
     pub fn new(view: &View, edges: u32, row: u32) -> GpuView {
@@ -55,15 +35,7 @@ pub(super) struct StatePipeline {
 
 impl StatePipeline {
     pub(super) fn new(device: &wgpu::Device) -> Result<StatePipeline, super::GpuError> {
-        let module = super::shader(
-            device,
-            "adapt_state.wgsl",
-            &[
-                include_str!("../../../shaders/adapt/state.wgsl"),
-                include_str!("../../../shaders/adapt/view.wgsl"),
-                super::EDGE_HELPERS,
-            ],
-        )?;
+        let module = super::shader(device, Stage::State)?;
         Ok(StatePipeline {
             pipeline: super::pipeline(device, &module, "edge_wants"),
             candidates: super::pipeline(device, &module, "collapse_candidates"),

@@ -341,23 +341,23 @@ fn shader_constants_match_the_host() {
         src.split("@workgroup_size(").skip(1).map(|s| s[..s.find(')').unwrap()].trim().parse().unwrap()).collect()
     };
     let shaders: [(&str, &str, u32); 6] = [
-        ("split", include_str!("../../../shaders/adapt/split.wgsl"), split::WORKGROUP),
-        ("state", include_str!("../../../shaders/adapt/state.wgsl"), super::state::WORKGROUP),
-        ("select", include_str!("../../../shaders/adapt/select.wgsl"), WORKGROUP),
-        ("scan", include_str!("../../../shaders/adapt/scan.wgsl"), WORKGROUP),
-        ("collapse", include_str!("../../../shaders/adapt/collapse.wgsl"), WORKGROUP),
-        ("compact", include_str!("../../../shaders/adapt/compact.wgsl"), WORKGROUP),
+        ("split", super::shaders::SPLIT, split::WORKGROUP),
+        ("state", super::shaders::STATE, super::state::WORKGROUP),
+        ("select", super::shaders::SELECT, WORKGROUP),
+        ("scan", super::shaders::SCAN, WORKGROUP),
+        ("collapse", super::shaders::COLLAPSE, WORKGROUP),
+        ("compact", super::shaders::COMPACT, WORKGROUP),
     ];
     for (name, src, size) in shaders {
         let found = sizes(src);
         assert!(!found.is_empty() && found.iter().all(|&s| s == size), "{name}: {found:?} vs {size}");
     }
-    assert!(include_str!("../../../shaders/adapt/scan.wgsl").contains(&format!("const BLOCK: u32 = {BLOCK}u;")));
-    let split_src = include_str!("../../../shaders/adapt/split.wgsl");
+    assert!(super::shaders::SCAN.contains(&format!("const BLOCK: u32 = {BLOCK}u;")));
+    let split_src = super::shaders::SPLIT;
     let scale = crate::mesh::Tangent::SCALE;
     assert_eq!(split_src.matches(&format!("f64(-{scale:.1}), f64({scale:.1})")).count(), 2);
     assert_eq!(crate::mesh::LOD_RADIUS, 1.0);
-    let mesh_src = include_str!("../../../shaders/adapt/layout.wgsl");
+    let mesh_src = super::shaders::LAYOUT;
     use crate::mesh::VertexFlags as F;
     for (name, flag) in [("RIVER", F::RIVER), ("REFINED", F::REFINED), ("LAKE", F::LAKE)] {
         assert!(mesh_src.contains(&format!("const FLAG_{name}: u32 = {}u;", flag.0)), "FLAG_{name}");
