@@ -14,9 +14,6 @@ use std::process::ExitCode;
 
 /// Largest face budget anywhere ([`riverworld::adapt::MAX_MESH_FACES`]).
 const MAX_MESH_FACES: u64 = riverworld::adapt::MAX_MESH_FACES as u64;
-/// Default face budgets of `view` and `render`.
-const VIEW_FACES: usize = 20_000_000;
-const RENDER_FACES: usize = 1_000_000;
 
 /// [`riverworld::adapt::face_budget`], its refusal naming `--max-faces`.
 fn budget(base: &riverworld::mesh::Mesh, asked: Option<usize>, default: usize) -> Result<usize, String> {
@@ -510,7 +507,7 @@ fn run_view(
         })
         .collect::<Result<Vec<_>, CliError>>()?;
     let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
-    let max_faces = budget(&built.mesh, max_faces, VIEW_FACES).map_err(input)?;
+    let max_faces = budget(&built.mesh, max_faces, riverworld::adapt::VIEW_FACES).map_err(input)?;
     let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
     let on_gpu = gpu.is_some();
@@ -562,7 +559,7 @@ fn run_render(
     });
     let renderer = render::shared().map_err(failed)?;
     let built = riverworld::planet::build_planet(&spec, &mut |_, _| {}).map_err(input)?;
-    let max_faces = budget(&built.mesh, max_faces, RENDER_FACES).map_err(input)?;
+    let max_faces = budget(&built.mesh, max_faces, riverworld::adapt::RENDER_FACES).map_err(input)?;
     let (gpu, choice) = select_backend(backend)?;
     eprintln!("riverworld: {choice}");
     let pixels = render::snapshot(renderer, &built.mesh, &spec.params, &shot, max_faces, gpu).map_err(failed)?;
@@ -676,5 +673,27 @@ mod tests {
             assert_eq!(format!("{config:?}"), format!("{:?}", riverworld::server::Config::default()));
         }
         assert_eq!(args.addr.to_string(), defaults::ADDR);
+    }
+
+    /// The face budgets `--help` states are the ones `view` and `render` use.
+    #[test]
+    fn help_states_the_face_budget_defaults() {
+        use clap::CommandFactory;
+        let grouped = |n: usize| {
+            let digits = n.to_string();
+            let mut out = String::new();
+            for (i, c) in digits.chars().enumerate() {
+                if i > 0 && (digits.len() - i).is_multiple_of(3) {
+                    out.push(',');
+                }
+                out.push(c);
+            }
+            out
+        };
+        let mut cli = Cli::command();
+        for (name, faces) in [("view", riverworld::adapt::VIEW_FACES), ("render", riverworld::adapt::RENDER_FACES)] {
+            let help = cli.find_subcommand_mut(name).unwrap().render_long_help().to_string();
+            assert!(help.contains(&format!("[default: {}", grouped(faces))), "{name}: {help}");
+        }
     }
 }

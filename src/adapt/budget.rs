@@ -3,7 +3,18 @@
 //! adaption loop (`run.rs`) on whichever backend the adapter has.
 
 use super::cpu::state;
+#[cfg(feature = "gpu")]
+use super::gpu;
 use super::{wishes_exceed, AdaptStats, Adapter, Camera, Fitted, BUDGET_STEP, MAX_STEP, PROBE_STEPS};
+
+/// Default face budget of `riverworld view` (~1.5 GB of mesh: a guard against a camera that
+/// would fill the memory).
+pub const VIEW_FACES: usize = 20_000_000;
+/// Default face budget of `riverworld render`.
+pub const RENDER_FACES: usize = 1_000_000;
+/// Default face budget of the HTTP views and renders (`max_faces` not given), within the
+/// server's `--max-faces-cap`.
+pub const HTTP_VIEW_FACES: usize = 500_000;
 
 impl Adapter {
     /// Finds the smallest step `k` whose converged face count `F(k)` is at most `max` and
@@ -135,7 +146,7 @@ impl Adapter {
     fn keep_fitted(&mut self, step: i32) -> Fitted {
         self.sync_host();
         #[cfg(feature = "gpu")]
-        let device = self.take_device_mesh();
+        let device = self.device.as_mut().map(gpu::Device::take_copy).unwrap_or_default();
         self.forget_device_mesh();
         Fitted {
             step,
@@ -150,16 +161,18 @@ impl Adapter {
     fn resume_from(&mut self, fitted: &Fitted) {
         self.set_mesh(fitted.mesh.clone(), fitted.ordered_faces);
         #[cfg(feature = "gpu")]
-        self.resume_device_mesh(&fitted.device);
+        if let Some(device) = &mut self.device {
+            device.resume(&fitted.device);
+        }
     }
 
     /// Goes back to the fitted mesh, its device copy included.
     fn restore(&mut self, fitted: Fitted) {
         self.set_mesh(fitted.mesh, fitted.ordered_faces);
         #[cfg(feature = "gpu")]
-        if self.gpu.is_some() {
+        if let Some(device) = &mut self.device {
             // (After a fall back to the CPU the kept device copy is dropped instead.)
-            self.resident = fitted.device;
+            device.restore(fitted.device);
         }
     }
 

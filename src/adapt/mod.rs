@@ -15,6 +15,7 @@
 //! was adapted before.
 
 mod budget;
+pub use budget::{HTTP_VIEW_FACES, RENDER_FACES, VIEW_FACES};
 pub mod camera;
 pub mod cpu;
 pub mod flight;
@@ -181,12 +182,10 @@ pub struct Adapter {
     last_step: Option<i32>,
     /// Faces of the mesh when its buffers were last put in spatial order (see `compact.rs`).
     ordered_faces: usize,
-    /// The device for the stages that run on the GPU backend; `None` on the CPU backend.
+    /// The GPU backend and the device copy of the mesh; `None` on the CPU backend (or after
+    /// a device failure fell back to it).
     #[cfg(feature = "gpu")]
-    gpu: Option<std::sync::Arc<gpu::GpuAdaption>>,
-    /// The mesh on that device, while it equals `mesh`.
-    #[cfg(feature = "gpu")]
-    resident: gpu::Resident,
+    device: Option<gpu::Device>,
 }
 
 impl Adapter {
@@ -201,17 +200,14 @@ impl Adapter {
             fresh: true,
             last_step: None,
             #[cfg(feature = "gpu")]
-            gpu: None,
-            #[cfg(feature = "gpu")]
-            resident: Default::default(),
+            device: None,
         }
     }
 
     /// Runs the stages the GPU backend has on `gpu` (`None`: everything on the CPU).
     #[cfg(feature = "gpu")]
     pub fn with_gpu(mut self, gpu: Option<std::sync::Arc<gpu::GpuAdaption>>) -> Adapter {
-        self.gpu = gpu;
-        self.resident = Default::default();
+        self.device = gpu.map(gpu::Device::new);
         self
     }
 
@@ -231,31 +227,37 @@ impl Adapter {
     /// Faces of the current mesh (slots, dead ones included), wherever it is.
     fn face_count(&self) -> usize {
         #[cfg(feature = "gpu")]
-        if let Some(n) = self.device_faces() {
+        if let Some(n) = self.device.as_ref().and_then(gpu::Device::faces_ahead) {
             return n;
         }
         self.mesh.faces.len()
     }
 
     /// Brings the host mesh up to date where a run on the device left it behind (the GPU
-    /// backend reads a mesh back only when it is going to be used).
+    /// backend reads a mesh back only when it is going to be used). A device failure here
+    /// leaves the older host mesh and the CPU backend, and says so.
     fn sync_host(&mut self) {
         #[cfg(feature = "gpu")]
-        self.read_back_mesh();
+        if let Some(device) = &mut self.device {
+            if let Err(e) = device.read_back(&mut self.mesh, &self.base) {
+                tracing::warn!("reading the adapted mesh back failed ({e}); continuing on the CPU");
+                self.device = None;
+            }
+        }
     }
 
     /// Drops the device copy of the mesh, after the host copy changed.
     fn forget_device_mesh(&mut self) {
         #[cfg(feature = "gpu")]
-        {
-            self.resident = Default::default();
+        if let Some(device) = &mut self.device {
+            device.forget();
         }
     }
 
     /// Whether stages run on the GPU (false after a device failure fell back to the CPU).
     pub fn on_gpu(&self) -> bool {
         #[cfg(feature = "gpu")]
-        return self.gpu.is_some();
+        return self.device.is_some();
         #[cfg(not(feature = "gpu"))]
         false
     }
@@ -315,7 +317,9 @@ impl Adapter {
         let order = cpu::compact::order(&mut self.mesh);
         self.ordered_faces = self.mesh.faces.len();
         #[cfg(feature = "gpu")]
-        self.renumber_device_mesh(&order);
+        if let Some(device) = &mut self.device {
+            device.renumber(&order);
+        }
         #[cfg(not(feature = "gpu"))]
         drop(order);
     }
@@ -332,23 +336,28 @@ impl Adapter {
         stats: &mut AdaptStats,
     ) -> bool {
         self.sync_host();
-        let cap = Some(face_cap(cap));
+        let target = run::Target { view, cap: Some(face_cap(cap)), refine_only };
         #[cfg(feature = "gpu")]
-        if let Some(g) = self.gpu.clone() {
-            let before = (stats.clone(), self.ordered_faces);
-            match self.run_on_device(&g, view, cap, refine_only, stats) {
-                Ok(converged) => return converged,
+        if let Some(device) = &mut self.device {
+            let before = stats.clone();
+            match device.run(&mut self.mesh, &self.base, &self.params, target, stats) {
+                Ok(outcome) => return self.ran(outcome),
                 Err(e) => {
                     // The host mesh is still the one the run started from: run it again here.
                     tracing::warn!("GPU adaption failed ({e}); continuing on the CPU");
-                    self.gpu = None;
-                    (*stats, self.ordered_faces) = before;
+                    self.device = None;
+                    *stats = before;
                 }
             }
         }
-        self.forget_device_mesh();
         let mut passes = cpu::CpuPasses::new(&mut self.mesh, &self.params, wishes);
-        let Ok(outcome) = run::adapt(&mut passes, view, cap, refine_only, stats);
+        let Ok(outcome) = run::adapt(&mut passes, target, stats);
+        self.ran(outcome)
+    }
+
+    /// Takes note of a run's compactions (the mesh's ordered part shrinks with them) and
+    /// returns whether it converged.
+    fn ran(&mut self, outcome: run::Outcome) -> bool {
         if let Some(faces) = outcome.compacted_to {
             self.ordered_faces = self.ordered_faces.min(faces);
         }

@@ -61,6 +61,15 @@ pub(crate) trait Passes {
     fn compact(&mut self, dead_faces: usize, times: &mut StageTimes) -> Result<(), Self::Error>;
 }
 
+/// What one run adapts to: the view, the face cap (live faces), and whether the mesh is a
+/// sub-refinement of the target's, so that it only needs refining.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Target<'a> {
+    pub view: &'a View,
+    pub cap: Option<usize>,
+    pub refine_only: bool,
+}
+
 /// What [`adapt`] did besides its statistics.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Outcome {
@@ -81,13 +90,8 @@ impl Outcome {
 
 /// Passes until nothing changes (`converged`), the face cap is exceeded or [`MAX_PASSES`] is
 /// hit. See the module doc for the policy.
-pub(crate) fn adapt<P: Passes>(
-    mesh: &mut P,
-    view: &View,
-    cap: Option<usize>,
-    refine_only: bool,
-    stats: &mut AdaptStats,
-) -> Result<Outcome, P::Error> {
+pub(crate) fn adapt<P: Passes>(mesh: &mut P, target: Target, stats: &mut AdaptStats) -> Result<Outcome, P::Error> {
+    let Target { view, cap, refine_only } = target;
     let over = |faces: usize| cap.is_some_and(|c| faces > c);
     let mut outcome = Outcome { converged: false, changed: false, compacted_to: None };
     let wanted = mesh.decide(view, &mut stats.stage_ms)?;

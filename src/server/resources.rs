@@ -25,8 +25,6 @@ use sha2::{Digest, Sha256};
 use std::sync::Arc;
 use tokio::sync::OnceCell;
 
-/// Faces of a view when the query gives no `max_faces`.
-pub const DEFAULT_MAX_FACES: usize = 500_000;
 /// Default width of the rasters (height is half).
 pub const DEFAULT_RASTER_WIDTH: u32 = 1024;
 /// Widest raster by default (`Config::max_raster_width`).
@@ -167,12 +165,12 @@ fn prepare(res: Resource, query: &str, params: &Params, caps: &Config) -> Result
 pub fn budget_query(camera: String, max_faces: Option<usize>, cap: usize) -> String {
     match max_faces {
         Some(n) => format!("{camera}&max_faces={n}"),
-        None => format!("{camera}&max_faces=default:{}", DEFAULT_MAX_FACES.min(cap)),
+        None => format!("{camera}&max_faces=default:{}", crate::adapt::HTTP_VIEW_FACES.min(cap)),
     }
 }
 
 /// The face budget of a view of `planet` ([`crate::adapt::face_budget`]): the query's
-/// `max_faces` (a 422 naming it below the base mesh), else [`DEFAULT_MAX_FACES`] within the
+/// `max_faces` (a 422 naming it below the base mesh), else [`crate::adapt::HTTP_VIEW_FACES`] within the
 /// server's `cap`, raised to the base mesh where that is larger.
 pub fn view_budget(planet: &Planet, asked: Option<usize>, cap: usize) -> Result<usize, ApiError> {
     // A planet stored before the server's cap was lowered may be above it: no view of it fits.
@@ -186,7 +184,7 @@ pub fn view_budget(planet: &Planet, asked: Option<usize>, cap: usize) -> Result<
             ),
         ));
     }
-    crate::adapt::face_budget(&planet.mesh, asked, DEFAULT_MAX_FACES.min(cap))
+    crate::adapt::face_budget(&planet.mesh, asked, crate::adapt::HTTP_VIEW_FACES.min(cap))
         .map_err(|e| ApiError::unprocessable("invalid_parameter", "max_faces", e.to_string()))
 }
 

@@ -34,7 +34,7 @@ mod split;
 mod state;
 
 pub use buffers::DeviceMesh;
-pub use run::Resident;
+pub use run::{Device, Resident};
 use std::sync::Arc;
 use std::time::Instant;
 

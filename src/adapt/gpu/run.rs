@@ -11,9 +11,10 @@
 use super::buffers::DeviceMesh;
 use super::{GpuAdaption, GpuError};
 use crate::adapt::run::{self, Look, Passes};
-use crate::adapt::{lap, AdaptStats, Adapter, StageTimes, View};
+use crate::adapt::{lap, AdaptStats, StageTimes, View};
 use crate::mesh::{Mesh, Renumbering};
 use crate::params::Params;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// The device copy of an adapter's mesh: equal to the host copy, or, with `ahead`, the newer
@@ -104,93 +105,112 @@ impl Passes for DevicePasses<'_> {
     }
 }
 
-impl Adapter {
-    /// [`Adapter::run`] on `gpu`. On an error the host mesh is still the one the run started
-    /// from.
-    pub(crate) fn run_on_device(
+/// The device side of an adapter: the GPU it adapts on and the device copy of its mesh. The
+/// adapter (`adapt/mod.rs`) holds one while the GPU backend is in use and drops it on a device
+/// failure, continuing on the CPU.
+#[derive(Clone)]
+pub struct Device {
+    gpu: Arc<GpuAdaption>,
+    copy: Resident,
+}
+
+impl std::fmt::Debug for Device {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Device").field("adapter", &self.gpu.info.name).field("copy", &self.copy).finish()
+    }
+}
+
+impl Device {
+    pub fn new(gpu: Arc<GpuAdaption>) -> Device {
+        Device { gpu, copy: Resident::default() }
+    }
+
+    /// The adaption loop on the device for `mesh` (adapted from `base`): the mesh is taken from
+    /// the device copy, or uploaded. A result within the cap is read back into `mesh`; one over
+    /// it (which the budget search usually throws away) stays on the device, ahead of `mesh`,
+    /// until [`Device::read_back`]. Returns the outcome; on an error `mesh` is still the one the
+    /// run started from.
+    pub(crate) fn run(
         &mut self,
-        gpu: &GpuAdaption,
-        view: &View,
-        cap: Option<usize>,
-        refine_only: bool,
+        mesh: &mut Mesh,
+        base: &Mesh,
+        params: &Params,
+        target: run::Target,
         stats: &mut AdaptStats,
-    ) -> Result<bool, GpuError> {
-        let dm = match self.resident.mesh.take() {
+    ) -> Result<run::Outcome, GpuError> {
+        let gpu = &*self.gpu;
+        let dm = match self.copy.mesh.take() {
             Some(dm) => dm,
-            None => upload(gpu, &self.mesh)?,
+            None => upload(gpu, mesh)?,
         };
-        let guide = self.base.guide.as_ref();
-        let mut passes = DevicePasses { gpu, dm, params: &self.params, radius: self.mesh.radius, guide, ready: 0 };
-        let outcome = run::adapt(&mut passes, view, cap, refine_only, stats)?;
+        let guide = base.guide.as_ref();
+        let mut passes = DevicePasses { gpu, dm, params, radius: mesh.radius, guide, ready: 0 };
+        let outcome = run::adapt(&mut passes, target, stats)?;
         let dm = passes.dm;
-        if let Some(faces) = outcome.compacted_to {
-            self.ordered_faces = self.ordered_faces.min(faces);
-        }
-        // A result over the face cap is usually thrown away (the budget search goes coarser):
-        // it is read back only if the caller keeps it (`Adapter::read_back_mesh`).
-        let wanted = cap.is_none_or(|c| outcome.converged && dm.lens.2 <= c);
+        let wanted = target.cap.is_none_or(|c| outcome.converged && dm.lens.2 <= c);
         if outcome.changed && wanted {
-            self.mesh = download(gpu, &dm, self.mesh.radius)?;
-            self.mesh.guide = self.base.guide.clone();
-            self.mesh.channels = self.base.channels.clone();
+            *mesh =
+                Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..download(gpu, &dm, mesh.radius)? };
         }
-        self.resident = Resident { mesh: Some(dm), ahead: outcome.changed && !wanted };
-        Ok(outcome.converged)
+        self.copy = Resident { mesh: Some(dm), ahead: outcome.changed && !wanted };
+        Ok(outcome)
     }
 
-    /// Takes the device copy of the mesh (after [`Adapter::sync_host`], so equal to it), for a
-    /// budget search to keep with the mesh it fitted.
-    pub(crate) fn take_device_mesh(&mut self) -> Resident {
-        match self.resident.ahead {
+    /// Drops the device copy, after the host copy changed.
+    pub(crate) fn forget(&mut self) {
+        self.copy = Resident::default();
+    }
+
+    /// Takes the device copy (equal to the host mesh: after [`Device::read_back`]), for a budget
+    /// search to keep with the mesh it fitted.
+    pub(crate) fn take_copy(&mut self) -> Resident {
+        match self.copy.ahead {
             true => Resident::default(),
-            false => std::mem::take(&mut self.resident),
+            false => std::mem::take(&mut self.copy),
         }
     }
 
-    /// Makes a device-side copy of `kept` (the device copy of a mesh equal to the host mesh
-    /// just set) the device copy of the mesh, so the next run starts without an upload. When
-    /// no copy can be made the run uploads the mesh as usual (a device failure during the copy
-    /// shows in the run, which then falls back to the CPU).
-    pub(crate) fn resume_device_mesh(&mut self, kept: &Resident) {
-        let (Some(gpu), Some(dm)) = (&self.gpu, &kept.mesh) else {
+    /// Makes `kept` the device copy again (its mesh was just made the host mesh again).
+    pub(crate) fn restore(&mut self, kept: Resident) {
+        self.copy = kept;
+    }
+
+    /// Makes a device-side duplicate of `kept` (the device copy of a mesh equal to the host mesh
+    /// just set) the device copy, so the next run starts without an upload. When no duplicate
+    /// can be made the run uploads the mesh as usual (a device failure during the copy shows in
+    /// the run, which then falls back to the CPU).
+    pub(crate) fn resume(&mut self, kept: &Resident) {
+        let Some(dm) = &kept.mesh else {
             return;
         };
-        match dm.duplicate(gpu) {
-            Ok(copy) => self.resident = Resident { mesh: Some(copy), ahead: false },
+        match dm.duplicate(&self.gpu) {
+            Ok(copy) => self.copy = Resident { mesh: Some(copy), ahead: false },
             Err(e) => tracing::debug!("copying the fitted mesh on the device failed ({e}); uploading it"),
         }
     }
 
     /// Faces of the device copy when it is ahead of the host mesh.
-    pub(crate) fn device_faces(&self) -> Option<usize> {
-        self.resident.mesh.as_ref().filter(|_| self.resident.ahead).map(|dm| dm.lens.2)
+    pub(crate) fn faces_ahead(&self) -> Option<usize> {
+        self.copy.mesh.as_ref().filter(|_| self.copy.ahead).map(|dm| dm.lens.2)
     }
 
-    /// Reads the device copy back when it is ahead of the host mesh. A device failure here
-    /// leaves the older host mesh and the CPU backend, and says so.
-    pub(crate) fn read_back_mesh(&mut self) {
-        let (Some(gpu), Some(dm), true) = (&self.gpu, &self.resident.mesh, self.resident.ahead) else {
-            return;
+    /// Reads the device copy into `mesh` (adapted from `base`) when it is ahead of it.
+    pub(crate) fn read_back(&mut self, mesh: &mut Mesh, base: &Mesh) -> Result<(), GpuError> {
+        let (Some(dm), true) = (&self.copy.mesh, self.copy.ahead) else {
+            return Ok(());
         };
-        match download(gpu, dm, self.mesh.radius) {
-            Ok(mesh) => {
-                self.mesh = Mesh { guide: self.base.guide.clone(), channels: self.base.channels.clone(), ..mesh };
-                self.resident.ahead = false;
-            }
-            Err(e) => {
-                tracing::warn!("reading the adapted mesh back failed ({e}); continuing on the CPU");
-                self.gpu = None;
-                self.resident = Resident::default();
-            }
-        }
+        let read = download(&self.gpu, dm, mesh.radius)?;
+        *mesh = Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..read };
+        self.copy.ahead = false;
+        Ok(())
     }
 
     /// Makes the device copy follow `order`, which the host copy (equal to it, between cameras)
     /// just went through; only the maps are uploaded. When that cannot be done the copy is
     /// dropped, and the next run uploads the mesh.
-    pub(crate) fn renumber_device_mesh(&mut self, order: &Renumbering) {
-        let resident = std::mem::take(&mut self.resident);
-        let (Some(gpu), Some(dm), false) = (&self.gpu, resident.mesh, resident.ahead) else {
+    pub(crate) fn renumber(&mut self, order: &Renumbering) {
+        let (gpu, copy) = (&*self.gpu, std::mem::take(&mut self.copy));
+        let (Some(dm), false) = (copy.mesh, copy.ahead) else {
             return;
         };
         let maps = (order.vertices.len(), order.edges.len(), order.faces.len());
@@ -205,7 +225,7 @@ impl Adapter {
         });
         gpu.record(super::DeviceTimes { upload_bytes: 4 * (maps.0 + maps.1 + maps.2) as u64, ..Default::default() });
         match renumbered {
-            Ok(out) => self.resident = Resident { mesh: Some(out), ahead: false },
+            Ok(out) => self.copy = Resident { mesh: Some(out), ahead: false },
             Err(e) => tracing::debug!("renumbering the device copy failed ({e}); uploading the mesh"),
         }
     }

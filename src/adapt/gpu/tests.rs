@@ -305,8 +305,10 @@ fn the_device_copy_follows_the_spatial_order_of_the_host() {
     dev.adapt(&ground(10.0, 20.0, 2e3, 1e4, 2.0), None);
     assert!(crate::adapt::cpu::compact::scattered(dev.mesh.faces.len(), dev.ordered_faces));
     dev.order();
-    let kept = dev.resident.mesh.as_ref().expect("the device copy is kept through the ordering");
-    assert!(!dev.resident.ahead);
+    let device = dev.device.as_mut().expect("still on the device");
+    assert_eq!(device.faces_ahead(), None);
+    let kept = device.take_copy();
+    let kept = kept.mesh.as_ref().expect("the device copy is kept through the ordering");
     let copy = kept.download(&g, dev.mesh.radius).unwrap();
     assert_same_mesh(&dev.mesh, &copy, "the ordered device copy");
 }

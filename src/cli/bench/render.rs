@@ -11,7 +11,7 @@ use riverworld::render::{self, scene, ImageFormat, Shot};
 use std::time::Instant;
 
 /// Face budget of a snapshot, as `render.png` uses without `max_faces`.
-const FACES: usize = riverworld::server::resources::DEFAULT_MAX_FACES;
+const FACES: usize = riverworld::adapt::HTTP_VIEW_FACES;
 
 fn resized(cam: &Camera, width: u32, height: u32) -> Camera {
     Camera { width, height, ..cam.clone() }
