@@ -213,7 +213,7 @@ pub fn rivers_geojson(planet: &Planet, params: &Params) -> String {
     let mesh = &planet.mesh;
     let mut features: Vec<Value> = planet
         .rivers
-        .reaches(mesh, &planet.runoff_mm)
+        .reaches(mesh, &planet.water)
         .iter()
         .map(|r| feature(mesh, r, params.sea_level_m, &planet.lake_of))
         .collect();
@@ -250,7 +250,7 @@ mod tests {
         let doc: Value = serde_json::from_str(&text).expect("valid JSON");
         assert_eq!(doc["type"], "FeatureCollection");
         let features = doc["features"].as_array().unwrap();
-        let reaches = planet.rivers.reaches(&planet.mesh, &planet.runoff_mm);
+        let reaches = planet.rivers.reaches(&planet.mesh, &planet.water);
         assert_eq!(features.len(), reaches.len());
         assert!(!features.is_empty(), "the test planet has rivers");
         let ids: BTreeSet<u64> = features.iter().map(|f| f["properties"]["id"].as_u64().unwrap()).collect();

@@ -127,7 +127,7 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
             row[c * 3..c * 3 + 3].copy_from_slice(&rgb);
         }
     });
-    let mut reaches = graph.reaches(mesh, &[]);
+    let mut reaches = graph.reaches(mesh, &Default::default());
     reaches.sort_by_key(|r| (r.strahler, r.id));
     let in_lake = |v: u32| mesh.vertices[v as usize].flags.contains(VertexFlags::LAKE);
     for r in &reaches {
@@ -186,7 +186,7 @@ mod tests {
         }
         assert!(land_checked > 0, "some land is not blue");
         // A river vertex in the middle of a reach is painted with a river colour.
-        let reaches = planet.rivers.reaches(&planet.mesh, &[]);
+        let reaches = planet.rivers.reaches(&planet.mesh, &Default::default());
         let r = reaches.iter().find(|r| r.vertices.len() >= 3).expect("a reach of 3 vertices");
         let (lat, lon) = lat_lon(planet.mesh.pos(r.vertices[1]));
         let px = rgb_at(&img, lat, lon);

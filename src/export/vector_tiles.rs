@@ -75,7 +75,7 @@ impl RiverLines {
         let mesh = &planet.mesh;
         let lines = planet
             .rivers
-            .reaches(mesh, &planet.runoff_mm)
+            .reaches(mesh, &planet.water)
             .iter()
             .map(|r| {
                 let pts: Vec<[f64; 3]> = r

@@ -156,7 +156,7 @@ fn check_feature(f: &Feat, z: u8) {
 #[test]
 fn tiles_hold_the_reaches_that_matter_at_their_zoom() {
     let planet = test_planet();
-    let reaches = planet.rivers.reaches(&planet.mesh, &planet.runoff_mm);
+    let reaches = planet.rivers.reaches(&planet.mesh, &planet.water);
     // The zoom where the largest order starts: its reaches, and no other, in the tiles; none
     // a zoom above.
     let top = reaches.iter().map(|r| r.strahler).max().unwrap();

@@ -11,6 +11,7 @@
 //! The flood tree then drains a closed depression to its lowest vertex, its *pit*: the path
 //! from the pit to where the depression used to spill is reversed.
 
+use super::network::{after_channel_losses, SECONDS_PER_YEAR};
 use super::relief::{Depressions, Flood, BREACH_DEPTH_M};
 use crate::mesh::NONE;
 
@@ -19,13 +20,24 @@ const GORGE_FLOW_M3: f64 = 1.0e10;
 
 /// Level of each depression's terminal lake, `None` where it overflows to the sea.
 /// `runoff[v]` is the water a land vertex yields (m³/yr); `net_loss[v]` what open water at the
-/// vertex loses, evaporation less precipitation (m³/yr, negative where rain exceeds it).
+/// vertex loses, evaporation less precipitation (m³/yr, negative where rain exceeds it);
+/// `channel_loss_mm[v]` what a river's floodplain loses there (mm/yr).
+///
+/// Between depressions a river loses water where it crosses dry land
+/// ([`after_channel_losses`]), so a desert basin's terminal lake gets what its rivers still carry
+/// there.
 ///
 /// A depression that overflows with a surplus `Q` (m³/yr) is breached instead of kept as a
 /// lake when it is at most `BREACH_DEPTH_M * sqrt(Q / 10 km³/yr)` deep: a river of that size
 /// cuts a gorge through its dam (the Congo's through the Crystal Mountains, which a 9 km DEM
 /// loses), so its depression is the map's artefact, not a lake. `dep.kept` records it.
-pub fn terminal_levels(flood: &Flood, dep: &mut Depressions, runoff: &[f64], net_loss: &[f64]) -> Vec<Option<f64>> {
+pub fn terminal_levels(
+    flood: &Flood,
+    dep: &mut Depressions,
+    runoff: &[f64],
+    net_loss: &[f64],
+    channel_loss_mm: &[f64],
+) -> Vec<Option<f64>> {
     let n = flood.height.len();
     let count = dep.spill.len();
     // Each depression's vertices, lowest first.
@@ -73,7 +85,10 @@ pub fn terminal_levels(flood: &Flood, dep: &mut Depressions, runoff: &[f64], net
                 }
             }
         }
-        acc[u] += acc[vi];
+        // The channel loses water on its way where it crosses dry land (inside a depression too:
+        // its rivers cross the basin's floor before they reach the lake).
+        let lost_mm = channel_loss_mm.get(vi).copied().unwrap_or(0.0);
+        acc[u] += after_channel_losses(acc[vi] / SECONDS_PER_YEAR, flood.edge_len[vi], lost_mm) * SECONDS_PER_YEAR;
     }
     terminal
 }
@@ -155,7 +170,7 @@ mod tests {
         assert_eq!((dep.spill.len(), dep.pit[0], dep.root[0]), (1, 3, 2));
         let runoff = vec![runoff_each; 6];
         let loss = vec![loss_each; 6];
-        let terminal = terminal_levels(&flood, &mut dep, &runoff, &loss);
+        let terminal = terminal_levels(&flood, &mut dep, &runoff, &loss, &[]);
         let (outlets, new_order) = drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);
         let flood = Flood { order: &new_order, downstream: &downstream, ..terrain };
         let l = levels(&flood, &dep, &terminal);

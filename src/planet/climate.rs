@@ -121,6 +121,19 @@ pub fn runoff_mm(p: f64, e0: f64) -> f64 {
     (p - aet).max(0.0)
 }
 
+/// What a river's floodplain and bed lose a year (mm) where `precip_mm` falls and open water
+/// would evaporate `e0_mm`: the net evaporation `e0 - p`, weighted by the square of the
+/// aridity `1 - p / e0`, so that deserts take most (the Tarim, Cooper Creek, the Nile through
+/// Nubia lose much of their flow on the way) and humid or semi-arid plains little (their
+/// floodplains are fed by rain and groundwater too). Nothing where rain exceeds evaporation.
+pub fn channel_loss_mm(precip_mm: f64, e0_mm: f64) -> f64 {
+    if e0_mm <= precip_mm || e0_mm <= 0.0 {
+        return 0.0;
+    }
+    let aridity = 1.0 - precip_mm.max(0.0) / e0_mm;
+    (e0_mm - precip_mm) * aridity * aridity
+}
+
 /// Decay length of moisture over land (km): rain falls and evaporates again in the tropics.
 fn decay_km(lat: f64) -> f64 {
     match lat.abs() {

@@ -39,9 +39,9 @@ pub struct Planet {
     /// lakes; empty without a map).
     pub lakes: Vec<lakes::Lake>,
     pub lake_of: Vec<u32>,
-    /// Runoff per base-mesh vertex, mm per year over its land (0 at sea), from the planet's
-    /// climate ([`climate`]): what the rivers' discharge sums.
-    pub runoff_mm: Vec<f32>,
+    /// Runoff and open water's net evaporation per base-mesh vertex, from the planet's climate
+    /// ([`climate`]): what the rivers' discharge sums and loses.
+    pub water: network::WaterBudget,
 }
 
 /// `stats.json`: the numbers that describe a built planet.
@@ -214,9 +214,9 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     // Splits below the base mesh follow an elevation map where it resolves them.
     mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
-    let runoff_mm = runoff(&mesh, p.sea_level_m);
+    let water = water_budget(&mesh, p.sea_level_m);
     // Channel widths for the water surface, from the discharge of the climate's runoff.
-    mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &runoff_mm)).map(std::sync::Arc::new);
+    mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &water)).map(std::sync::Arc::new);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));
     let stats = Stats {
         faces: mesh.faces.len(),
@@ -238,16 +238,23 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     let lake_of = std::mem::take(&mut report.lake_of);
     let lakes = lakes::lakes(&mesh, &lake_of, &report.lake_levels);
     progress("done", 1.0);
-    Ok(Planet { mesh, rivers: graph, stats, lakes, lake_of, runoff_mm })
+    Ok(Planet { mesh, rivers: graph, stats, lakes, lake_of, water })
 }
 
-/// Runoff (mm/yr) of each land vertex in the climate of the built mesh.
-fn runoff(mesh: &Mesh, sea: f64) -> Vec<f32> {
+/// Runoff (mm/yr) of each land vertex and what a river's floodplain loses there, in the
+/// climate of the built mesh.
+fn water_budget(mesh: &Mesh, sea: f64) -> network::WaterBudget {
     let land = |v: usize| mesh.vertices[v].flags.is_inland() || mesh.vertices[v].flags.contains(VertexFlags::COAST);
     let altitude = |v: usize| mesh.vertices[v].ground - sea;
     let c = climate::Climate::of_mesh(mesh, land, altitude);
     let at = c.at_vertices(mesh, altitude);
-    at.iter().enumerate().map(|(v, &(p, e0))| if land(v) { climate::runoff_mm(p, e0) as f32 } else { 0.0 }).collect()
+    let runoff_mm = at
+        .iter()
+        .enumerate()
+        .map(|(v, &(p, e0))| if land(v) { climate::runoff_mm(p, e0) as f32 } else { 0.0 })
+        .collect();
+    let channel_loss_mm = at.iter().map(|&(p, e0)| climate::channel_loss_mm(p, e0) as f32).collect();
+    network::WaterBudget { runoff_mm, channel_loss_mm }
 }
 
 /// Whether face `f` may overlap the map bounds (its vertices' bounding box, widened by the

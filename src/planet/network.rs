@@ -61,6 +61,41 @@ impl Reach {
     }
 }
 
+/// Channel widths of floodplain, banks and bed that lose a river's water where it crosses dry
+/// land (transmission losses: evaporation from the floodplain and riparian belt, seepage into
+/// the bed). Calibrated on the Nile: a river of its natural flow (2,830 m³/s) loses about 5 % over
+/// 1,000 km of hyper-arid desert, the order of the natural Nile's losses between Khartoum (with
+/// the Atbara) and Aswan; relatively more the smaller the river (`w ~ Q^0.51`), so desert
+/// streams dry up (docs/realism.md).
+pub const LOSING_WIDTHS: f64 = 10.0;
+
+/// What the climate gives and takes per base-mesh vertex: runoff from its land and the net
+/// evaporation of open water there (mm per year; empty vectors for none).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct WaterBudget {
+    /// Runoff over the vertex's land (0 at sea): what the rivers' discharge sums.
+    pub runoff_mm: Vec<f32>,
+    /// What a river's floodplain loses per unit of its area
+    /// ([`super::climate::channel_loss_mm`], [`LOSING_WIDTHS`]).
+    pub channel_loss_mm: Vec<f32>,
+}
+
+impl WaterBudget {
+    /// The discharge (m³/s) left of `q` after `length_m` of channel at vertex `v`.
+    pub fn after_losses(&self, v: usize, q: f64, length_m: f64) -> f64 {
+        let loss_mm = self.channel_loss_mm.get(v).map_or(0.0, |&e| f64::from(e));
+        after_channel_losses(q, length_m, loss_mm)
+    }
+}
+
+/// The discharge (m³/s) left of `q` after `length_m` of channel where a floodplain loses
+/// `loss_mm` a year ([`super::climate::channel_loss_mm`]): `LOSING_WIDTHS` channel widths of
+/// floodplain and bed lose it.
+pub fn after_channel_losses(q: f64, length_m: f64, loss_mm: f64) -> f64 {
+    let net = loss_mm.max(0.0) * 1e-3 / SECONDS_PER_YEAR;
+    (q - LOSING_WIDTHS * channel_width_m(q) * length_m * net).max(0.0)
+}
+
 /// Channel width (m) at mean discharge `q` (m³/s): `3.5 Q^0.51` (see [`Reach`]).
 pub fn channel_width_m(q: f64) -> f64 {
     3.5 * q.max(0.0).powf(0.51)
@@ -184,20 +219,32 @@ impl RiverGraph {
     /// Area drained through each vertex: every land vertex owns a third of its land faces, and
     /// vertices off the network drain into their lowest neighbour on it.
     pub fn drainage_area(&self, mesh: &Mesh) -> Vec<f64> {
-        self.accumulate(mesh, |_| 1.0)
+        self.accumulate(mesh, |_| 1.0, |_, _, a| a)
     }
 
-    /// Mean discharge through each vertex (m³/s): the runoff (`runoff_mm[v]`, mm per year over
-    /// vertex `v`'s land) of the area it drains. Lakes pass their inflow on; a closed basin's
-    /// pit takes in all of its own.
-    pub fn discharge(&self, mesh: &Mesh, runoff_mm: &[f32]) -> Vec<f64> {
-        let per_area = |v: usize| runoff_mm.get(v).map_or(0.0, |&r| f64::from(r) * 1e-3 / SECONDS_PER_YEAR);
-        self.accumulate(mesh, per_area)
+    /// Mean discharge through each vertex (m³/s): the runoff (`water.runoff_mm[v]`, mm per year
+    /// over vertex `v`'s land) of the area it drains, less what the channel lost on its way
+    /// where it crossed dry land ([`WaterBudget::after_losses`]). Lakes pass their inflow on; a
+    /// closed basin's pit takes in all of its own.
+    pub fn discharge(&self, mesh: &Mesh, water: &WaterBudget) -> Vec<f64> {
+        let per_area = |v: usize| water.runoff_mm.get(v).map_or(0.0, |&r| f64::from(r) * 1e-3 / SECONDS_PER_YEAR);
+        let lose = |v: u32, d: u32, q: f64| {
+            if mesh.vertices[v as usize].flags.contains(VertexFlags::LAKE) {
+                return q;
+            }
+            water.after_losses(v as usize, q, mesh.pos(v).distance(mesh.pos(d)))
+        };
+        self.accumulate(mesh, per_area, lose)
     }
 
     /// Sums `per_area(v)` times each land vertex's area down the network, as for
-    /// [`RiverGraph::drainage_area`].
-    fn accumulate(&self, mesh: &Mesh, per_area: impl Fn(usize) -> f64) -> Vec<f64> {
+    /// [`RiverGraph::drainage_area`]; `pass(v, d, q)` is what of `q` through `v` reaches `d`.
+    fn accumulate(
+        &self,
+        mesh: &Mesh,
+        per_area: impl Fn(usize) -> f64,
+        pass: impl Fn(u32, u32, f64) -> f64,
+    ) -> Vec<f64> {
         let n = mesh.vertices.len();
         let mut own = vec![0.0f64; n];
         for f in 0..mesh.faces.len() as u32 {
@@ -221,7 +268,7 @@ impl RiverGraph {
         for &v in &self.order {
             let d = self.downstream[v as usize];
             if d != NONE {
-                acc[d as usize] += acc[v as usize];
+                acc[d as usize] += pass(v, d, acc[v as usize]);
             }
         }
         acc
@@ -291,11 +338,11 @@ impl RiverGraph {
     }
 
     /// Splits the network into reaches between springs, confluences and mouths, with their
-    /// discharge from `runoff_mm` (mm per year per vertex; empty for none).
-    pub fn reaches(&self, mesh: &Mesh, runoff_mm: &[f32]) -> Vec<Reach> {
+    /// discharge from `water` (empty for none).
+    pub fn reaches(&self, mesh: &Mesh, water: &WaterBudget) -> Vec<Reach> {
         let n = mesh.vertices.len();
         let area = self.drainage_area(mesh);
-        let flow = self.discharge(mesh, runoff_mm);
+        let flow = self.discharge(mesh, water);
         let mut strahler = vec![0u32; n];
         for &v in &self.order {
             let mut best = 0;
@@ -362,5 +409,28 @@ impl RiverGraph {
                 }
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod loss_tests {
+    use super::*;
+    use crate::planet::climate::channel_loss_mm;
+
+    /// Rivers lose water on their way where it is dry, relatively more the smaller they are, and
+    /// nothing where rain exceeds evaporation.
+    #[test]
+    fn desert_channels_lose_water_and_humid_ones_none() {
+        assert_eq!(channel_loss_mm(1500.0, 1200.0), 0.0);
+        let (desert, steppe) = (channel_loss_mm(30.0, 2500.0), channel_loss_mm(500.0, 1000.0));
+        assert!(desert > 2000.0 && steppe < 150.0, "{desert} {steppe}");
+        assert_eq!(after_channel_losses(100.0, 1e5, 0.0), 100.0);
+        // 1,000 km of hyper-arid desert: a Nile-sized river keeps about 95 %, a Tarim-sized one
+        // about four fifths, a desert stream of 1 m³/s dries up.
+        let through = |q: f64| (0..100).fold(q, |q, _| after_channel_losses(q, 1e4, desert));
+        let (nile, tarim) = (through(2800.0) / 2800.0, through(150.0) / 150.0);
+        assert!((0.9..0.98).contains(&nile) && (0.6..0.9).contains(&tarim), "{nile} {tarim}");
+        assert_eq!(through(1.0), 0.0);
+        assert!(after_channel_losses(1.0, 1e6, desert) == 0.0);
     }
 }

@@ -73,22 +73,25 @@ fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at
     own + (h - own) * VALLEY_DEPTH
 }
 
-/// Water each vertex yields as runoff from land (m³/yr) and loses as open water, evaporation
-/// less precipitation (m³/yr), in the planet's climate ([`super::climate`]); `height` is its
-/// altitude (m relative to sea level).
-fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], area: &[f64]) -> (Vec<f64>, Vec<f64>) {
-    use super::climate::{runoff_mm, Climate};
+/// Water each vertex yields as runoff from land (m³/yr), loses as open water, evaporation
+/// less precipitation (m³/yr), and a river's floodplain loses there (mm/yr,
+/// [`super::climate::channel_loss_mm`]), in the planet's climate ([`super::climate`]); `height`
+/// is its altitude (m relative to sea level).
+fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], area: &[f64]) -> [Vec<f64>; 3] {
+    use super::climate::{channel_loss_mm, runoff_mm, Climate};
     let is_land = |v: usize| inland[v] || coast[v];
     let climate = Climate::of_mesh(mesh, is_land, |v| height[v]);
     let mut runoff = vec![0.0f64; area.len()];
     let mut loss = vec![0.0f64; area.len()];
+    let mut channel = vec![0.0f64; area.len()];
     for (v, (p, e0)) in climate.at_vertices(mesh, |v| height[v]).into_iter().enumerate() {
         if is_land(v) {
             runoff[v] = runoff_mm(p, e0) * 1e-3 * area[v];
         }
         loss[v] = (e0 - p) * 1e-3 * area[v];
+        channel[v] = channel_loss_mm(p, e0);
     }
-    (runoff, loss)
+    [runoff, loss, channel]
 }
 
 /// The area each vertex stands for: a third of each face around it.
@@ -258,8 +261,8 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         };
         let flood = super::relief::Flood { order: &order, downstream: &downstream, edge_len: &lens, ..terrain };
         let mut dep = super::relief::depressions(&flood);
-        let (runoff, net_loss) = water_balance(mesh, &inland, &coast, &height, &area);
-        let terminal = super::basins::terminal_levels(&flood, &mut dep, &runoff, &net_loss);
+        let [runoff, net_loss, channel_loss] = water_balance(mesh, &inland, &coast, &height, &area);
+        let terminal = super::basins::terminal_levels(&flood, &mut dep, &runoff, &net_loss, &channel_loss);
         let (outlets, new_order) =
             super::basins::drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);
         for o in outlets {

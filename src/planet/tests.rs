@@ -89,7 +89,7 @@ fn merges_of_more_than_two_rivers_are_rare() {
 #[test]
 fn reaches_link_downstream() {
     let p = planet(9, 3000);
-    let reaches = p.rivers.reaches(&p.mesh, &p.runoff_mm);
+    let reaches = p.rivers.reaches(&p.mesh, &p.water);
     assert!(!reaches.is_empty());
     for r in &reaches {
         assert!(r.vertices.len() >= 2 || r.downstream_id.is_none());

@@ -96,7 +96,7 @@ fn ground_view_shows_a_river_where_the_mesh_has_one() {
     let mesh = &planet.mesh;
     // A river vertex with dry land all around it (not the mouth), on a long river, low in
     // the hills (snow is nearly as blue as water).
-    let mut reaches = planet.rivers.reaches(mesh, &[]);
+    let mut reaches = planet.rivers.reaches(mesh, &Default::default());
     reaches.sort_by(|a, b| b.upstream_area_m2.total_cmp(&a.upstream_area_m2));
     let middle = |r: &&crate::planet::network::Reach| r.vertices[r.vertices.len() / 2];
     let reach = reaches
