@@ -139,6 +139,42 @@ fn water_fragment(s: Surface) -> @location(0) vec4<f32> {
     return vec4<f32>(haze(colour, s.position, up), alpha);
 }
 
+// Rivers narrower than a pixel: one-pixel lines along their water surface whose opacity is
+// the share of the pixel the channel covers (`river_lines` in `src/render/scene.rs`), coloured
+// as water of the channel's depth.
+struct LineIn {
+    @location(0) position: vec3<f32>,
+    @location(1) coverage: f32,
+    @location(2) up: vec3<f32>,
+    @location(3) depth: f32,
+}
+
+struct Line {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) position: vec3<f32>,
+    @location(1) up: vec3<f32>,
+    // x: coverage, y: channel depth.
+    @location(2) data: vec2<f32>,
+}
+
+@vertex
+fn river_vertex(v: LineIn) -> Line {
+    var out: Line;
+    out.clip = frame.view_proj * vec4<f32>(v.position, 1.0);
+    out.position = v.position;
+    out.up = v.up;
+    out.data = vec2<f32>(v.coverage, v.depth);
+    return out;
+}
+
+@fragment
+fn river_fragment(l: Line) -> @location(0) vec4<f32> {
+    let ramp = sqrt(clamp(l.data.y / frame.lookup.w, 0.0, 1.0));
+    let albedo = textureSampleLevel(water_ramp, ramp_sampler, vec2<f32>(ramp, 0.5), 0.0).rgb;
+    let up = normalize(l.up);
+    return vec4<f32>(haze(lit(albedo, up, up), l.position, up), clamp(l.data.x, 0.0, 1.0));
+}
+
 struct Background {
     @builtin(position) clip: vec4<f32>,
     @location(0) ndc: vec2<f32>,

@@ -31,6 +31,11 @@ pub fn shows_water(mesh: &Mesh, levels: &[f64], t: &[u32; 3]) -> bool {
     t.iter().any(|&v| levels[v as usize] > mesh.vertices[v as usize].ground)
 }
 
+/// The channel width (m) of a river vertex off lakes (see [`half_width`]).
+pub fn channel_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
+    half_width(mesh, v).map(|h| 2.0 * h)
+}
+
 /// Half the channel width (m) of a river vertex off lakes, where the mesh knows its rivers'
 /// widths; `None` for the sea, lakes, land, or without widths. A river vertex of a fine view
 /// far from the base mesh's rivers (a new arm) is a small stream.

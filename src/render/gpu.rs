@@ -2,7 +2,7 @@
 //! one frame at a time (a mutex queues concurrent callers). Draws `shaders/render.wgsl` into an
 //! offscreen sRGB target with a reversed-Z 32-bit float depth buffer and reads the pixels back.
 
-use super::scene::{FrameUniforms, RenderVertex, Scene};
+use super::scene::{FrameUniforms, LineVertex, RenderVertex, Scene};
 use super::RenderError;
 use crate::export::climate::{climate_texture, water_colour};
 use crate::params::Climate;
@@ -27,6 +27,7 @@ pub struct Renderer {
     sky: wgpu::RenderPipeline,
     terrain: wgpu::RenderPipeline,
     water: wgpu::RenderPipeline,
+    rivers: wgpu::RenderPipeline,
     sampler: wgpu::Sampler,
     ramp: wgpu::TextureView,
     climates: Vec<(Climate, wgpu::TextureView)>,
@@ -55,7 +56,7 @@ impl Renderer {
 
     fn with_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Renderer {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("terrain.wgsl"),
+            label: Some("render.wgsl"),
             source: wgpu::ShaderSource::Wgsl(SHADER.into()),
         });
         let texture_entry = |binding| wgpu::BindGroupLayoutEntry {
@@ -146,6 +147,43 @@ impl Renderer {
                 cache: None,
             })
         };
+        let rivers = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("rivers"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("river_vertex"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: std::mem::size_of::<LineVertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x3, 3 => Float32],
+                })],
+            },
+            primitive: wgpu::PrimitiveState { topology: wgpu::PrimitiveTopology::LineList, ..Default::default() },
+            // On the water surface, which lies on or above the ground along a river edge: drawn
+            // where nothing nearer is, without hiding what comes after.
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(false),
+                depth_compare: Some(wgpu::CompareFunction::GreaterEqual),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("river_fragment"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: COLOUR_FORMAT,
+                    blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
         let sky = pipeline("sky", "sky_vertex", "sky_fragment", None, false);
         let terrain = pipeline("terrain", "terrain_vertex", "terrain_fragment", None, true);
         let water = pipeline("water", "water_vertex", "water_fragment", Some(wgpu::BlendState::ALPHA_BLENDING), true);
@@ -179,6 +217,7 @@ impl Renderer {
             sky,
             terrain,
             water,
+            rivers,
             sampler,
             ramp,
             climates,
@@ -261,6 +300,7 @@ impl Renderer {
         let vertices = buffer("vertices", bytemuck::cast_slice(&scene.vertices), wgpu::BufferUsages::VERTEX);
         let terrain = buffer("terrain", bytemuck::cast_slice(&scene.terrain), wgpu::BufferUsages::INDEX);
         let water = buffer("water", bytemuck::cast_slice(&scene.water), wgpu::BufferUsages::INDEX);
+        let rivers = buffer("rivers", bytemuck::cast_slice(&scene.rivers), wgpu::BufferUsages::VERTEX);
         let climate_view = &self.climates.iter().find(|(c, _)| *c == climate).expect("every climate uploaded").1;
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("frame"),
@@ -303,6 +343,11 @@ impl Renderer {
                 pass.set_pipeline(&self.water);
                 pass.set_index_buffer(water.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..scene.water.len() as u32, 0, 0..1);
+            }
+            if !scene.rivers.is_empty() {
+                pass.set_pipeline(&self.rivers);
+                pass.set_vertex_buffer(0, rivers.slice(..));
+                pass.draw(0..scene.rivers.len() as u32, 0..1);
             }
         }
         let row = width * 4;

@@ -45,6 +45,18 @@ pub struct RenderVertex {
     pub latitude_deg: f32,
 }
 
+/// One end of a river line (`LineIn` in the shader): the water surface's eye-relative position,
+/// the line's opacity there (from the share of a pixel the channel covers), the local up, and
+/// the channel's depth.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct LineVertex {
+    pub position: [f32; 3],
+    pub coverage: f32,
+    pub up: [f32; 3],
+    pub depth_m: f32,
+}
+
 /// Uniforms of one frame (`Frame` in the shader).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -66,7 +78,45 @@ pub struct Scene {
     pub terrain: Vec<u32>,
     /// Faces with at least one corner under water (the water surface).
     pub water: Vec<u32>,
+    /// River edges narrower than a pixel, as line pairs (see [`river_lines`]).
+    pub rivers: Vec<LineVertex>,
     pub frame: FrameUniforms,
+}
+
+/// Rivers narrower than a pixel as lines, so that they stay visible at their true width: each
+/// river edge between two channelled vertices (not a wadi, not a lake) becomes a one-pixel line
+/// along its water surface whose opacity follows the share of the pixel the channel covers (its
+/// width over the pixel's footprint at that distance; the square root of it, so that the eye
+/// sees a river covering a tenth of its pixels at a third, as a map draws it). A river whose
+/// channel spans a pixel or more is drawn by its water surface too, where the mesh resolves it,
+/// and by an opaque line where not.
+pub fn river_lines(mesh: &Mesh, cam: &Camera) -> Vec<LineVertex> {
+    let eye = cam.eye;
+    // Metres a pixel spans per metre of distance.
+    let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
+    let end = |v: u32| -> Option<LineVertex> {
+        let vert = &mesh.vertices[v as usize];
+        let width = crate::export::water::channel_width(mesh, vert).filter(|&w| w > 0.0)?;
+        let up = vert.p().normalize_or(DVec3::Z);
+        let p = vert.p() + up * (vert.water - vert.ground).max(0.0);
+        let footprint = (p - eye).length() * pixel_per_m;
+        // Depth by hydraulic geometry at the discharge that gives this width (network.rs).
+        let q = (width / 3.5).powf(1.0 / 0.51);
+        Some(LineVertex {
+            position: (p - eye).as_vec3().to_array(),
+            coverage: (width / footprint.max(1e-9)).min(1.0).sqrt() as f32,
+            up: up.as_vec3().to_array(),
+            depth_m: (0.36 * q.powf(0.37)) as f32,
+        })
+    };
+    mesh.edges
+        .par_iter()
+        .filter(|e| e.kind == crate::mesh::EdgeKind::River && e.v[0] != crate::mesh::DEAD)
+        .flat_map_iter(|e| match (end(e.v[0]), end(e.v[1])) {
+            (Some(a), Some(b)) => vec![a, b],
+            _ => Vec::new(),
+        })
+        .collect()
 }
 
 /// The default sun: over the viewer's right shoulder, high above the view's centre.
@@ -136,7 +186,7 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
         ],
         sky: [SKY_M as f32, 0.0, 0.0, 0.0],
     };
-    Scene { vertices, terrain, water, frame }
+    Scene { vertices, terrain, water, rivers: river_lines(mesh, cam), frame }
 }
 
 #[cfg(test)]

@@ -251,3 +251,55 @@ fn the_sahara_from_orbit_is_dry() {
     assert!(share <= 0.02, "water on {:.1} % of the Sahara view", share * 100.0);
     assert!(flooded > 2.0 * share, "without channels {:.1} %, with {:.1} %", flooded * 100.0, share * 100.0);
 }
+
+/// From 2,500 km above Amazonia the Amazon and its great tributaries, kilometres wide but far
+/// narrower than a pixel (~8 km here), stay visible as lines at their true width (the share of
+/// the pixel they cover), while the Sahara's wadis, dry beds, draw nothing.
+#[test]
+fn rivers_narrower_than_a_pixel_stay_visible_as_lines() {
+    let (planet, params) = earth_dem();
+    let view = |lat: f64, lon: f64| {
+        let altitude = 2_500_000.0;
+        let (eye, target) = (direction(lat, lon) * (params.radius_m + altitude), direction(lat, lon) * params.radius_m);
+        let q = format!(
+            "eye={},{},{}&target={},{},{}&width=320&height=240&fov=60",
+            eye.x, eye.y, eye.z, target.x, target.y, target.z
+        );
+        let cam = Camera::parse_query(&q, params.radius_m).unwrap().0;
+        let mut adapter = crate::adapt::Adapter::new(planet.mesh.clone(), params.clone());
+        adapter.adapt(&cam, Some(300_000));
+        let mut scene = scene::prepare(adapter.mesh(), params, &cam, scene::default_sun(&cam));
+        let with = renderer().draw(&scene, params.climate, cam.width, cam.height).unwrap();
+        let lines = scene.rivers.len() / 2;
+        let coverage: Vec<f32> = scene.rivers.iter().map(|v| v.coverage).collect();
+        scene.rivers.clear();
+        let without = renderer().draw(&scene, params.climate, cam.width, cam.height).unwrap();
+        // Pixels the lines changed visibly, and how much bluer (blue over the mean of red and green)
+        // they became on average.
+        let blue = |p: &[u8]| f64::from(p[2]) - 0.5 * (f64::from(p[0]) + f64::from(p[1]));
+        let visibly = |a: &[u8], b: &[u8]| a.iter().zip(b).map(|(x, y)| u32::from(x.abs_diff(*y))).sum::<u32>() > 12;
+        let sand = without.chunks_exact(4).filter(|p| p[0] as i32 > p[2] as i32 + 30).count();
+        let sand_changed = with
+            .chunks_exact(4)
+            .zip(without.chunks_exact(4))
+            .filter(|(a, b)| b[0] as i32 > b[2] as i32 + 30 && visibly(a, b))
+            .count();
+        let changed: Vec<f64> = with
+            .chunks_exact(4)
+            .zip(without.chunks_exact(4))
+            .filter(|(a, b)| visibly(a, b))
+            .map(|(a, b)| blue(a) - blue(b))
+            .collect();
+        let bluer = changed.iter().sum::<f64>() / changed.len().max(1) as f64;
+        (lines, coverage, changed.len(), bluer, sand_changed as f64 / sand.max(1) as f64)
+    };
+    let (lines, coverage, changed, bluer, _) = view(-3.0, -60.0);
+    assert!(lines > 100 && coverage.iter().all(|&c| c > 0.0 && c <= 1.0), "{lines} lines");
+    // Sub-pixel: the great rivers cover a fraction of their pixels, not all of them.
+    assert!(coverage.iter().any(|&c| c < 0.5) && coverage.iter().any(|&c| c > 0.2), "{coverage:?}");
+    assert!(changed > 500 && bluer > 5.0, "{changed} pixels changed, {bluer:.1} bluer");
+    // The Sahara's wadis are dry beds: its sand keeps its colour (the Sahel's rivers in the
+    // same view draw).
+    let (_, _, _, _, sand) = view(22.0, 12.0);
+    assert!(sand < 0.01, "lines over {:.1} % of the Sahara's sand", sand * 100.0);
+}
