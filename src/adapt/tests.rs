@@ -17,7 +17,7 @@ fn base() -> &'static crate::planet::Planet {
 /// A camera `height` metres above the surface point at (lat, lon), looking at a point `ahead`
 /// metres to the north along the ground.
 fn camera(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
-    looking_north(crate::planet::continents::direction(lat, lon), R + 3000.0, height, ahead, px)
+    looking_north(crate::geo::direction(lat, lon), R + 3000.0, height, ahead, px)
 }
 
 /// A 320x180 camera `height` metres above the point in direction `dir` at distance `ground` from

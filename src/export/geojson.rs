@@ -24,9 +24,9 @@
 //! LineStrings. A reach of a single vertex (a broken network end) is written with its point
 //! repeated, so every LineString has two positions and every `downstream_id` still resolves.
 
+use crate::geo::lat_lon;
 use crate::mesh::{Mesh, NONE};
 use crate::params::Params;
-use crate::planet::continents::lat_lon;
 use crate::planet::lakes::{outlines, Lake};
 use crate::planet::network::Reach;
 use crate::planet::Planet;

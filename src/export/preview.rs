@@ -14,9 +14,9 @@
 use super::climate::{climate_colour, water_colour};
 use super::raster::{encode_png, SphereRaster};
 use super::surface_normals;
+use crate::geo::lat_lon;
 use crate::mesh::{FaceKind, Mesh, VertexFlags};
 use crate::params::Params;
-use crate::planet::continents::lat_lon;
 use crate::planet::RiverGraph;
 use glam::DVec3;
 use rayon::prelude::*;

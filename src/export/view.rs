@@ -98,7 +98,7 @@ mod tests {
         let planet = crate::export::test_planet();
         let p = Params { base_faces: 2000, ..Params::default() };
         let r = p.radius_m;
-        let dir = crate::planet::continents::direction(5.0, 10.0);
+        let dir = crate::geo::direction(5.0, 10.0);
         let eye = dir * (r + 3000.0 + 2000.0);
         let cam = Camera::new(eye, dir * (r + 3000.0) + DVec3::Z * 5000.0, None, 60.0, 320, 180, 4.0, 20.0, r).unwrap();
         let mut a = Adapter::new(planet.mesh.clone(), p.clone());

@@ -6,7 +6,7 @@ use crate::mesh::{EdgeKind, FaceKind, Mesh, VertexFlags};
 use crate::rng::Sequence;
 use glam::DVec3;
 
-pub use crate::geo::{direction, lat_lon};
+use crate::geo::lat_lon;
 
 /// Centroid of a face.
 pub fn face_centre(mesh: &Mesh, f: u32) -> DVec3 {

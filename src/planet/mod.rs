@@ -265,7 +265,7 @@ fn face_touches(mesh: &Mesh, f: u32, bounds: &crate::maps::GeoBounds) -> bool {
     }
     let face = &mesh.faces[f as usize];
     let pad = (mesh.edge_length(face.e[0]) / mesh.radius).to_degrees();
-    let ll: Vec<(f64, f64)> = mesh.corners(f).iter().map(|&v| continents::lat_lon(mesh.pos(v))).collect();
+    let ll: Vec<(f64, f64)> = mesh.corners(f).iter().map(|&v| crate::geo::lat_lon(mesh.pos(v))).collect();
     let (lat_lo, lat_hi) = ll.iter().fold((90.0f64, -90.0f64), |(lo, hi), &(la, _)| (lo.min(la), hi.max(la)));
     if lat_hi + pad < bounds.south || lat_lo - pad > bounds.north {
         return false;

@@ -14,7 +14,7 @@ use crate::rng::{salt, unit, Sequence};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::continents::lat_lon;
+use crate::geo::lat_lon;
 
 /// Radius of the window (in pixels of the sampled map) whose lowest ground routes a vertex.
 const ROUTE_RADIUS_PX: u32 = 1;

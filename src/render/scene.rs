@@ -10,9 +10,9 @@
 //! far-plane clipping and no z-fighting between the ground and the water above it.
 
 use crate::adapt::Camera;
+use crate::geo::lat_lon;
 use crate::mesh::Mesh;
 use crate::params::Params;
-use crate::planet::continents::lat_lon;
 use bytemuck::{Pod, Zeroable};
 use glam::{DMat4, DVec3};
 use rayon::prelude::*;

@@ -2,9 +2,9 @@
 //! adapter: lavapipe in CI).
 
 use super::*;
+use crate::geo::direction;
 use crate::maps::{Map, MapKind, MapLimits};
 use crate::mesh::VertexFlags;
-use crate::planet::continents::direction;
 use crate::planet::{build_planet, Planet, PlanetSpec};
 use std::sync::OnceLock;
 

@@ -96,7 +96,7 @@ fn assert_same_mesh(cpu: &Mesh, dev: &Mesh, what: &str) {
 /// A camera `height` m above the ground at (lat, lon) looking `ahead` m along the ground to the north.
 fn ground(lat: f64, lon: f64, height: f64, ahead: f64, px: f64) -> Camera {
     let sea = Params::paper().sea_level_m;
-    let dir = crate::planet::continents::direction(lat, lon);
+    let dir = crate::geo::direction(lat, lon);
     let north = (DVec3::Z - dir * dir.z).normalize_or(DVec3::X);
     let eye = dir * (R + sea + height);
     let target = (dir + north * (ahead / R)).normalize() * (R + sea);
@@ -395,7 +395,7 @@ fn a_planet_with_other_parameters_adapts_alike() {
     let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
     for (i, (lat, lon, height)) in [(10.0, 20.0, 3e6), (-30.0, 140.0, 2e4), (45.0, -60.0, 3e3)].into_iter().enumerate()
     {
-        let dir = crate::planet::continents::direction(lat, lon);
+        let dir = crate::geo::direction(lat, lon);
         let eye = dir * (r + params.sea_level_m + height);
         let cam = Camera::new(eye, dir * r + DVec3::Z * (height + 1e4), None, 50.0, 480, 270, 3.0, 15.0, r).unwrap();
         let v = View::new(&cam, r, params.min_edge_length_m, top);
@@ -424,7 +424,7 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
     // the map's ground).
     let cameras = [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4), (28.0, 86.0, 4e5)];
     for (i, (lat, lon, height)) in cameras.into_iter().enumerate() {
-        let dir = crate::planet::continents::direction(lat, lon);
+        let dir = crate::geo::direction(lat, lon);
         let north = (DVec3::Z - dir * dir.z).normalize();
         let target = (dir + north * 0.01).normalize() * r;
         let cam = Camera::new(dir * (r + height), target, None, 60.0, 640, 360, 3.0, 15.0, r).unwrap();

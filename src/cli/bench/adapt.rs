@@ -36,7 +36,7 @@ impl Scene {
             .filter(|&v| !planet.mesh.vertices[v as usize].flags.contains(VertexFlags::MOUTH))
             .max_by(|&a, &b| graph.tributaries(a).cmp(&graph.tributaries(b)).then(b.cmp(&a)))
             .unwrap_or(0);
-        let (rlat, rlon) = riverworld::planet::continents::lat_lon(planet.mesh.pos(river));
+        let (rlat, rlon) = riverworld::geo::lat_lon(planet.mesh.pos(river));
         let orbit = Camera::new(direction(10.0, 20.0) * 3.0 * r, DVec3::ZERO, None, 40.0, 1920, 1080, 2.0, 10.0, r)
             .expect("orbit camera");
         let top1 = local_top(&planet.mesh, rlat, rlon, 150_000.0);
