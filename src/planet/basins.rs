@@ -23,9 +23,9 @@ const GORGE_FLOW_M3: f64 = 1.0e10;
 /// vertex loses, evaporation less precipitation (m³/yr, negative where rain exceeds it);
 /// `channel_loss_mm[v]` what a river's floodplain loses there (mm/yr).
 ///
-/// Between depressions a river loses water where it crosses dry land
+/// On its way, inside a depression too, a river loses water where it crosses dry land
 /// ([`after_channel_losses`]), so a desert basin's terminal lake gets what its rivers still carry
-/// there.
+/// when they reach it.
 ///
 /// A depression that overflows with a surplus `Q` (m³/yr) is breached instead of kept as a
 /// lake when it is at most `BREACH_DEPTH_M * sqrt(Q / 10 km³/yr)` deep: a river of that size

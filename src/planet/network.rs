@@ -53,7 +53,7 @@ impl Reach {
         channel_width_m(self.discharge_m3s)
     }
     pub fn depth_m(&self) -> f64 {
-        0.36 * self.discharge_m3s.max(0.0).powf(0.37)
+        channel_depth_m(self.discharge_m3s)
     }
     /// Whether the reach flows all year (see [`PERENNIAL_M3S`]).
     pub fn perennial(&self) -> bool {
@@ -99,6 +99,17 @@ pub fn after_channel_losses(q: f64, length_m: f64, loss_mm: f64) -> f64 {
 /// Channel width (m) at mean discharge `q` (m³/s): `3.5 Q^0.51` (see [`Reach`]).
 pub fn channel_width_m(q: f64) -> f64 {
     3.5 * q.max(0.0).powf(0.51)
+}
+
+/// Channel depth (m) at mean discharge `q` (m³/s): `0.36 Q^0.37` (see [`Reach`]).
+pub fn channel_depth_m(q: f64) -> f64 {
+    0.36 * q.max(0.0).powf(0.37)
+}
+
+/// The mean discharge (m³/s) whose channel is `width_m` wide: the inverse of
+/// [`channel_width_m`].
+pub fn discharge_of_width(width_m: f64) -> f64 {
+    (width_m.max(0.0) / 3.5).powf(1.0 / 0.51)
 }
 
 /// Whether a river with mean discharge `q` (m³/s) from `area_m2` flows all year (see
@@ -432,5 +443,6 @@ mod loss_tests {
         assert!((0.9..0.98).contains(&nile) && (0.6..0.9).contains(&tarim), "{nile} {tarim}");
         assert_eq!(through(1.0), 0.0);
         assert!(after_channel_losses(1.0, 1e6, desert) == 0.0);
+        assert!((channel_width_m(discharge_of_width(300.0)) - 300.0).abs() < 1e-9);
     }
 }

@@ -100,18 +100,17 @@ pub fn river_lines(mesh: &Mesh, cam: &Camera) -> Vec<LineVertex> {
         let up = vert.p().normalize_or(DVec3::Z);
         let p = vert.p() + up * (vert.water - vert.ground).max(0.0);
         let footprint = (p - eye).length() * pixel_per_m;
-        // Depth by hydraulic geometry at the discharge that gives this width (network.rs).
-        let q = (width / 3.5).powf(1.0 / 0.51);
+        let depth = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
         Some(LineVertex {
             position: (p - eye).as_vec3().to_array(),
             coverage: (width / footprint.max(1e-9)).min(1.0).sqrt() as f32,
             up: up.as_vec3().to_array(),
-            depth_m: (0.36 * q.powf(0.37)) as f32,
+            depth_m: depth as f32,
         })
     };
     mesh.edges
         .par_iter()
-        .filter(|e| e.kind == crate::mesh::EdgeKind::River && e.v[0] != crate::mesh::DEAD)
+        .filter(|e| e.kind == crate::mesh::EdgeKind::River)
         .flat_map_iter(|e| match (end(e.v[0]), end(e.v[1])) {
             (Some(a), Some(b)) => vec![a, b],
             _ => Vec::new(),

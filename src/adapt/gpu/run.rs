@@ -36,9 +36,7 @@ impl Clone for Resident {
 struct DevicePasses<'a> {
     gpu: &'a GpuAdaption,
     dm: DeviceMesh,
-    params: &'a Params,
-    radius: f64,
-    guide: Option<&'a std::sync::Arc<crate::mesh::guide::Guide>>,
+    terrain: super::split::Terrain<'a>,
     /// Edges the next pass splits.
     ready: usize,
 }
@@ -76,8 +74,7 @@ impl Passes for DevicePasses<'_> {
         }
         let mut sub = gpu.submission();
         if splits > 0 {
-            let terrain = super::split::Terrain { params: self.params, radius: self.radius, guide: self.guide };
-            gpu.split.encode(gpu, &mut sub, &mut self.dm, terrain, splits);
+            gpu.split.encode(gpu, &mut sub, &mut self.dm, self.terrain, splits);
             gpu.state.encode(gpu, &mut sub, &self.dm, view);
         }
         gpu.select.encode(gpu, &mut sub, &self.dm);
@@ -143,14 +140,13 @@ impl Device {
             Some(dm) => dm,
             None => upload(gpu, mesh)?,
         };
-        let guide = base.guide.as_ref();
-        let mut passes = DevicePasses { gpu, dm, params, radius: mesh.radius, guide, ready: 0 };
+        let terrain = super::split::Terrain { params, radius: mesh.radius, guide: base.guide.as_ref() };
+        let mut passes = DevicePasses { gpu, dm, terrain, ready: 0 };
         let outcome = run::adapt(&mut passes, target, stats)?;
         let dm = passes.dm;
         let wanted = target.cap.is_none_or(|c| outcome.converged && dm.lens.2 <= c);
         if outcome.changed && wanted {
-            *mesh =
-                Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..download(gpu, &dm, mesh.radius)? };
+            *mesh = download(gpu, &dm, base)?;
         }
         self.copy = Resident { mesh: Some(dm), ahead: outcome.changed && !wanted };
         Ok(outcome)
@@ -199,8 +195,7 @@ impl Device {
         let (Some(dm), true) = (&self.copy.mesh, self.copy.ahead) else {
             return Ok(());
         };
-        let read = download(&self.gpu, dm, mesh.radius)?;
-        *mesh = Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..read };
+        *mesh = download(&self.gpu, dm, base)?;
         self.copy.ahead = false;
         Ok(())
     }
@@ -246,10 +241,12 @@ fn upload(gpu: &GpuAdaption, mesh: &crate::mesh::Mesh) -> Result<DeviceMesh, Gpu
     Ok(dm)
 }
 
-fn download(gpu: &GpuAdaption, dm: &DeviceMesh, radius: f64) -> Result<crate::mesh::Mesh, GpuError> {
-    let mesh = dm.download(gpu, radius)?;
+/// The device copy read back as a mesh adapted from `base` (whose map guide and channels it
+/// shares).
+fn download(gpu: &GpuAdaption, dm: &DeviceMesh, base: &Mesh) -> Result<Mesh, GpuError> {
+    let mesh = dm.download(gpu, base.radius)?;
     gpu.record(super::DeviceTimes { download_bytes: mesh_bytes(dm.lens), ..Default::default() });
-    Ok(mesh)
+    Ok(Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..mesh })
 }
 
 fn mesh_bytes((nv, ne, nf): (usize, usize, usize)) -> u64 {
