@@ -33,6 +33,7 @@ pub mod salt {
     pub const RIVER: u32 = 4;
     pub const SEA: u32 = 5;
     pub const ORDER: u32 = 6;
+    pub const DETAIL: u32 = 7;
 }
 
 /// A small sequential generator (SplitMix64) for orderings during base-mesh construction.

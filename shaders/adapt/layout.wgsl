@@ -95,6 +95,16 @@ struct SplitParams {
     // `Guide::min_edge_m` (`src/mesh/guide.rs`): continent splits of edges at least this long
     // take the elevation map's ground.
     guide_min_edge: f64,
+    // `src/mesh/split/landform.rs`: the landform's detail below the map's pixel.
+    floor_slope: f64,
+    floor_length: f64,
+    relief: f64,
+    altitude_gain: f64,
+    hybrid: f64,
+    relief_length: f64,
+    smooth_length: f64,
+    threshold: f64,
+    ridge: f64,
     // Slots where the new vertices, edges and faces start.
     vertices: u32,
     edges: u32,

@@ -24,6 +24,7 @@ const SALT_XI: u32 = 1u;
 const SALT_ETA: u32 = 2u;
 const SALT_ALTITUDE: u32 = 3u;
 const SALT_RIVER: u32 = 4u;
+const SALT_DETAIL: u32 = 7u;
 const F64_MIN_POSITIVE: f64 = 2.2250738585072014e-308lf;
 const F64_MIN: f64 = -1.7976931348623157e308lf;
 
@@ -355,7 +356,33 @@ fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
     return best;
 }
 
-// `continent_vertex`: midpoint displacement within eq. 11-12, or a new river arm (eq. 10).
+// `landform_range` and `landform_ground` (`src/mesh/split/landform.rs`): the diamond's mean,
+// its ridge term and the landform's random offset; `g` is the ground at `[a, t, b, d]`.
+fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32) -> f64 {
+    let a = g[0];
+    let t = g[1];
+    let b = g[2];
+    let d = g[3];
+    let mean = ((a + b) * p.half + (t + d) * p.half) * p.half;
+    let lo = min(min(a, t), min(b, d));
+    let hi = max(max(a, t), max(b, d));
+    let slope = (hi - lo) / edge_len;
+    var height = p.half;
+    if hi > lo {
+        height = (mean - lo) / (hi - lo);
+    }
+    let floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length);
+    let relief = edge_len * (p.relief * slope + p.altitude_gain * max(mean - p.sea_level, 0.0lf)) * (p.hybrid + height);
+    let threshold = max(p.one - slope / (p.threshold * p.ground_slope), 0.0lf);
+    let fade = edge_len / (edge_len + p.smooth_length);
+    let range = (floor + relief) * threshold / (p.one + edge_len / p.relief_length) * fade;
+    let ridge = (a + b) * p.half - (t + d) * p.half;
+    let n = unit(seed, SALT_ALTITUDE) + unit(seed, SALT_DETAIL) - p.one;
+    return mean + p.ridge * threshold * ridge + range * p.half * n;
+}
+
+// `continent_vertex`: midpoint displacement within eq. 11-12 (the landform's detail), or a new
+// river arm (eq. 10).
 fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) -> Made {
     var kinds = kinds_in;
     let ends = array<u32, 4>(s.a, s.t, s.b, s.d);
@@ -368,7 +395,6 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         lens[i] = distance3(at_unit, normalize3(triple(around[i].pos))) * p.radius;
         grounds[i] = around[i].ground;
     }
-    let xi = unit(seed, SALT_ALTITUDE);
     var bank_lo = p.sea_level + p.one;
     var slope_lo = -F64_MAX;
     var any_lo = -F64_MAX;
@@ -432,8 +458,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     if mapped.found {
         wanted = p.sea_level + mapped.metres;
     } else {
-        let mean = (((grounds[0] + grounds[1]) + grounds[2]) + grounds[3]) * p.quarter;
-        wanted = mean + (xi - p.half) * land_roughness(edge_len);
+        wanted = landform_ground(grounds, edge_len, seed);
     }
     let lo = max(bank_lo, slope_lo);
     var g: f64;

@@ -68,9 +68,13 @@ impl Guide {
         if map.kind != MapKind::Elevation {
             return None;
         }
-        let (_, dlat) = map.pixel_size_deg();
+        let (dlon, dlat) = map.pixel_size_deg();
         let pixel = dlat.to_radians(); // tangent-plane units near a face's centre
         let b = map.bounds;
+        // Grid cells no wider than the map's pixels in either direction (a regional map's
+        // pixels are narrower east-west than north-south by the cosine of its latitude).
+        let mid_lat = if b.is_global() { 0.0 } else { (b.north + b.south) * 0.5 };
+        let cell = dlat.min(dlon * mid_lat.to_radians().cos()).to_radians();
         let (faces, side): (Vec<GuideFace>, u32) = if b.is_global() {
             let axes = [
                 (DVec3::X, DVec3::Y, DVec3::Z),
@@ -80,7 +84,7 @@ impl Guide {
                 (DVec3::Z, DVec3::Y, DVec3::NEG_X),
                 (DVec3::NEG_Z, DVec3::Y, DVec3::X),
             ];
-            let side = ((2.0 / pixel).ceil() as u32).clamp(2, MAX_SIDE);
+            let side = ((2.0 / cell).ceil() as u32).clamp(2, MAX_SIDE);
             let faces = axes
                 .iter()
                 .map(|&(c, e, n)| GuideFace {
@@ -118,7 +122,7 @@ impl Guide {
                 }
             }
             let extent = (hi.x - lo.x).max(hi.y - lo.y);
-            let side = ((extent / pixel).ceil() as u32 + 2).clamp(2, MAX_SIDE);
+            let side = ((extent / cell).ceil() as u32 + 2).clamp(2, MAX_SIDE);
             let step = extent / f64::from(side - 2);
             let face = GuideFace {
                 centre: c.to_array(),

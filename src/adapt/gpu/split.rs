@@ -8,6 +8,7 @@ use super::layout::SplitParams;
 use super::{dispatch_grid, GpuAdaption, Stage, Submission};
 use crate::mesh::guide::{Guide, GuideFace};
 use crate::mesh::split::altitude::{LAND_ROUGHNESS, LAND_ROUGHNESS_LENGTH, SEA_ROUGHNESS, SEA_ROUGHNESS_LENGTH};
+use crate::mesh::split::landform;
 use crate::mesh::split::position::MIN_SPLIT_QUALITY;
 use crate::mesh::Tangent;
 use crate::params::Params;
@@ -50,6 +51,15 @@ impl SplitParams {
             tangent_scale: Tangent::SCALE,
             tangent_offset: Tangent::OFFSET,
             guide_min_edge: guide.map_or(0.0, |g| g.min_edge_m),
+            floor_slope: landform::FLOOR_SLOPE,
+            floor_length: landform::FLOOR_LENGTH,
+            relief: landform::RELIEF,
+            altitude_gain: landform::ALTITUDE,
+            hybrid: landform::HYBRID,
+            relief_length: landform::RELIEF_LENGTH,
+            smooth_length: landform::SMOOTH_LENGTH,
+            threshold: landform::THRESHOLD,
+            ridge: landform::RIDGE,
             vertices: lens.0 as u32,
             edges: lens.1 as u32,
             faces: lens.2 as u32,

@@ -5,6 +5,7 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
+use super::landform::landform_ground;
 use super::position::{
     altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
     weighted_position, well_shaped_towards,
@@ -146,7 +147,6 @@ fn continent_vertex(
 ) -> (Vertex, [EdgeKind; 4]) {
     let around = [d.a(), d.t(), d.b(), d.d()]; // the far ends of e1, e2, e3, e4
     let r = d.radius;
-    let xi = altitude_random(seed);
     // Eq. 2's position (see `split_position`) and its direction, from which the horizontal
     // distances to the neighbours (on the base sphere) and the lift of eq. 1 follow.
     let corners = corner_directions(d);
@@ -226,7 +226,7 @@ fn continent_vertex(
     let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and_then(|g| g.at(dir));
     let wanted = match mapped {
         Some(m) => p.sea_level_m + m,
-        None => around.iter().map(|v| v.ground).sum::<f64>() * 0.25 + (xi - 0.5) * land_roughness(edge_len),
+        None => landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope()),
     };
     let lo = bank_lo.max(slope_lo);
     let g = if any_lo > hi {

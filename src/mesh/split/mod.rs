@@ -7,6 +7,7 @@
 //! faces `f3` and `f4` take the halves at `b`.
 
 pub mod altitude;
+pub mod landform;
 pub mod position;
 
 use crate::mesh::batch::Buffers;

@@ -1,0 +1,144 @@
+//! Landform-dependent detail below the map's resolution (beyond the paper: Musgrave's hybrid
+//! and ridged multifractals written as midpoint displacement, after Cortial et al. 2020's
+//! amplification by landform). A continent split that no map resolves takes its diamond's mean
+//! ground plus an offset whose size and sign follow the diamond's own landform:
+//!
+//! - **Relief.** The offset's range grows with the diamond's slope (the steeper of its two
+//!   diagonals) times the edge, and with its altitude above the sea: mountains gain rugged
+//!   detail, hills some, and plains, deltas and coastal lowlands little beyond a floor of a few
+//!   metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres). Ground nearing the steepest
+//!   slope allowed (eq. 12's `s_g`, by [`THRESHOLD`]) gains less and at last none: a threshold
+//!   hillslope, where landslides stop further steepening (and eq. 12 stays satisfiable). As one level's offsets steepen
+//!   the diamonds of the next, roughness cascades as in a multifractal: steep ground grows
+//!   steeper detail, flat ground stays flat.
+//! - **Hybrid.** The range is larger where the diamond's centre stands high in its own range
+//!   than low in it ([`HYBRID`]): valley floors stay smooth, crests and summits rough (the hybrid
+//!   multifractal weights each octave by the signal so far).
+//! - **Ridged.** A split edge along a crest (its ends above the diamond's other two corners) is
+//!   lifted further, one along a valley sunk further, by [`RIDGE`] of the difference, so crests
+//!   sharpen and valleys deepen instead of rounding off.
+//! - **Scale.** The range falls with the edge as real relief does below a map's pixel (the
+//!   constants were fitted with `tools/landforms.py` against the Jacksboro 90 m DEM and crops of
+//!   the Earth DEM: detail and median slope within the goals' ranges, docs/realism.md), and
+//!   flattens for edges beyond [`RELIEF_LENGTH`], whose relief the base mesh already holds, and
+//!   fades below [`SMOOTH_LENGTH`].
+//!
+//! Everything is a function of the four corners' ground, the edge's length, the sea level and
+//! the vertex seed, with `+ - * /`, `min`, `max` and `abs` in `f64` only, so `split.wgsl`'s
+//! `landform_ground` gives the same bits, and views, tiles and DEMs the same vertex whatever the
+//! path that made it.
+
+use crate::rng::{salt, unit};
+
+/// The floor's range per metre of a short edge (flat ground), and the edge length at which it
+/// has flattened to half of that.
+pub const FLOOR_SLOPE: f64 = 0.3;
+pub const FLOOR_LENGTH: f64 = 400.0;
+/// The relief term's range per metre of edge per unit of the diamond's slope.
+pub const RELIEF: f64 = 1.6;
+/// The relief term's range per metre of edge per metre of altitude above the sea (3 m per km of
+/// edge at 1,000 m up): high plateaus are rough even where the map shows them flat.
+pub const ALTITUDE: f64 = 3.0e-6;
+/// Weight of the relief term at the diamond's lowest point (`HYBRID + 1` at its highest).
+pub const HYBRID: f64 = 0.5;
+/// Edge length at which the whole range has flattened to half.
+pub const RELIEF_LENGTH: f64 = 200_000.0;
+/// The share of eq. 12's steepest slope `s_g` at which a diamond's detail has faded to nothing.
+pub const THRESHOLD: f64 = 0.35;
+/// Below about this edge length the range falls faster than the edge, so that the ground is
+/// smooth at the scale of metres (soil-mantled hillslopes) instead of steepening without end
+/// as views refine to centimetres.
+pub const SMOOTH_LENGTH: f64 = 20.0;
+/// How far a crest along the split edge is lifted (a valley sunk) beyond the diamond's mean,
+/// per metre that the edge's ends stand above (below) the other two corners.
+pub const RIDGE: f64 = 0.25;
+
+/// Full range of the offset at a continent split of an edge `edge_len` long whose diamond has
+/// the ground `g` at `[a, t, b, d]` (the split edge runs `a -> b`); also the diamond's mean and
+/// the share of the detail its steepness leaves (1 on flat ground, 0 at a threshold hillslope).
+pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64) -> (f64, f64, f64) {
+    let [a, t, b, d] = g;
+    let mean = ((a + b) * 0.5 + (t + d) * 0.5) * 0.5;
+    let lo = a.min(t).min(b.min(d));
+    let hi = a.max(t).max(b.max(d));
+    // The diamond's relief over its diagonals (both about one edge long): a plane's gradient,
+    // and a saddle's or a crest's steepness too.
+    let slope = (hi - lo) / edge_len;
+    // Where the diamond's mean stands in its range: 0 at its lowest corner, 1 at its highest.
+    let height = if hi > lo { (mean - lo) / (hi - lo) } else { 0.5 };
+    let floor = FLOOR_SLOPE * edge_len / (1.0 + edge_len / FLOOR_LENGTH);
+    let relief = edge_len * (RELIEF * slope + ALTITUDE * (mean - sea).max(0.0)) * (HYBRID + height);
+    // Ground near the steepest slope allowed gains no more detail: a threshold hillslope.
+    let threshold = (1.0 - slope / (THRESHOLD * max_slope)).max(0.0);
+    let fade = edge_len / (edge_len + SMOOTH_LENGTH);
+    ((floor + relief) * threshold / (1.0 + edge_len / RELIEF_LENGTH) * fade, mean, threshold)
+}
+
+/// The ground wanted at a continent split below the map's resolution: the diamond's mean, the
+/// ridge term and the landform's random offset (triangular: the sum of two uniforms).
+pub fn landform_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64) -> f64 {
+    let (range, mean, threshold) = landform_range(g, edge_len, sea, max_slope);
+    let [a, t, b, d] = g;
+    let ridge = (a + b) * 0.5 - (t + d) * 0.5;
+    let n = unit(seed, salt::ALTITUDE) + unit(seed, salt::DETAIL) - 1.0;
+    mean + RIDGE * threshold * ridge + range * 0.5 * n
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SEA: f64 = 3_000.0;
+    const S_G: f64 = 1.0;
+
+    #[test]
+    fn steep_ground_gets_more_detail_than_flat_ground() {
+        let len = 1_000.0;
+        let (flat, ..) = landform_range([SEA + 100.0; 4], len, SEA, S_G);
+        let (hills, ..) = landform_range([SEA + 100.0, SEA + 130.0, SEA + 150.0, SEA + 120.0], len, SEA, S_G);
+        let (alps, ..) = landform_range([SEA + 1_500.0, SEA + 1_560.0, SEA + 1_620.0, SEA + 1_550.0], len, SEA, S_G);
+        assert!(flat < 100.0 && flat > 0.0, "{flat}");
+        assert!(hills > 1.5 * flat, "{hills} vs {flat}");
+        assert!(alps > 1.2 * hills, "{alps} vs {hills}");
+        // A threshold hillslope gains nothing.
+        let (cliff, ..) = landform_range([SEA, SEA + 200.0, SEA + 400.0, SEA + 200.0], len, SEA, S_G);
+        assert_eq!(cliff, 0.0);
+        // A high plateau, flat on the map, is rougher than a lowland plain.
+        let (tibet, ..) = landform_range([SEA + 4_500.0; 4], len, SEA, S_G);
+        assert!(tibet > 1.1 * flat, "{tibet} vs {flat}");
+    }
+
+    #[test]
+    fn detail_falls_with_scale_and_flattens_for_long_edges() {
+        let g = |len: f64| {
+            let rise = 0.1 * len; // the same slope at every scale
+            landform_range([SEA + 1_000.0, SEA + 1_000.0 + rise, SEA + 1_000.0 + rise, SEA + 1_000.0], len, SEA, S_G).0
+        };
+        assert!(g(100.0) < g(1_000.0) && g(1_000.0) < g(10_000.0));
+        // Flattened beyond RELIEF_LENGTH: a 2,000 km edge gains less than ten times a 200 km one.
+        assert!(g(2_000_000.0) < 10.0 * g(200_000.0));
+    }
+
+    #[test]
+    fn crests_rise_and_valleys_sink() {
+        let len = 1_000.0;
+        // The same four altitudes, the split edge once along the crest and once across it.
+        let mean = |g: [f64; 4]| (0..256).map(|s| landform_ground(g, len, s, SEA, S_G)).sum::<f64>() / 256.0;
+        let c = mean([SEA + 600.0, SEA + 500.0, SEA + 600.0, SEA + 500.0]);
+        let v = mean([SEA + 500.0, SEA + 600.0, SEA + 500.0, SEA + 600.0]);
+        let lift = RIDGE * (1.0 - 0.1 / THRESHOLD) * 50.0;
+        assert!(c > SEA + 550.0 + 0.5 * lift, "crest {c}, lift {lift}");
+        assert!(v < SEA + 550.0 - 0.5 * lift, "valley {v}, lift {lift}");
+    }
+
+    #[test]
+    fn the_offset_stays_within_its_range() {
+        let g = [SEA + 1_000.0, SEA + 1_300.0, SEA + 1_100.0, SEA + 1_250.0];
+        let (range, mean, threshold) = landform_range(g, 5_000.0, SEA, S_G);
+        let ridge = RIDGE * threshold * ((g[0] + g[2]) * 0.5 - (g[1] + g[3]) * 0.5);
+        for s in 0..1_000 {
+            let x = landform_ground(g, 5_000.0, s, SEA, S_G) - mean - ridge;
+            assert!(x.abs() <= range * 0.5, "{x} {range}");
+        }
+    }
+}
