@@ -277,3 +277,62 @@ fn layer_json_names_the_tiles() {
     assert_eq!(available[0][0]["endX"], 1);
     assert_eq!(available[3][0]["endY"], 7);
 }
+
+/// Borders of the built-in Earth's tiles on and near the octahedron's edges (the equator and
+/// the meridians 0°, 90°E, 180°, 90°W), where two tiles' refined regions may lie in different
+/// root triangles.
+#[test]
+#[ignore = "diagnostic: builds the Earth DEM planet"]
+fn earth_borders_on_octahedron_edges() {
+    use crate::maps::{Map, MapKind, MapLimits};
+    let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_etopo5_1024x512.tif")).unwrap();
+    let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
+    let spec = crate::planet::PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
+    let planet = crate::planet::build_planet(&spec, &mut |_, _| {}).unwrap();
+    let t = PlanetTiles::new(Arc::new(planet), Params::default()).unwrap();
+    let get = |z, x, y| read(&terrain_tile(&t, (z, x, y), Extensions::default(), MAX_ZOOM).unwrap());
+    let (mut checked, mut bad) = (0, 0);
+    for z in 2u8..=7 {
+        let w = 2u32 << z;
+        let h = 1u32 << z;
+        let mut sides = Vec::new();
+        // East sides on the meridians 0, 90E, 180, 90W and one column beside each.
+        for col in [0, w / 4, w / 2, 3 * w / 4] {
+            for dx in [0, 1] {
+                let x = (col + w - 1 + dx) % w;
+                for y in (0..h).step_by((h as usize / 8).max(1)) {
+                    sides.push((x, y, true));
+                }
+            }
+        }
+        // North sides on the equator and one row beside it.
+        for dy in [0, 1] {
+            let y = (h / 2 + dy).saturating_sub(1);
+            for x in (0..w).step_by((w as usize / 16).max(1)) {
+                sides.push((x, y, false));
+            }
+        }
+        for (x, y, east) in sides {
+            if !east && y + 1 >= h {
+                continue;
+            }
+            let here = get(z, x, y);
+            let (other, sa, sb) = if east { (get(z, (x + 1) % w, y), 2, 0) } else { (get(z, x, y + 1), 3, 1) };
+            let (a, b) = (side_heights(&here, sa), side_heights(&other, sb));
+            let tol = here.step().max(other.step()) + 1e-3;
+            let worst = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).fold(0.0, f64::max);
+            checked += 1;
+            if worst > tol {
+                bad += 1;
+                let b = tile_bounds(z, x, y).unwrap();
+                println!(
+                    "{z}/{x}/{y} {} side: worst {worst:.1} m (bounds {:?})",
+                    if east { "east" } else { "north" },
+                    b
+                );
+            }
+        }
+    }
+    println!("{bad} of {checked} sides differ");
+    assert_eq!(bad, 0);
+}

@@ -592,3 +592,36 @@ fn a_regional_map_keeps_its_heights_to_its_edges() {
     eprintln!("outer ring: {} cells, median |error| {median:.1} m", ring_errors.len());
     assert!(median < 30.0, "median |planet - map| in the outer ring: {median:.1} m");
 }
+
+/// Below the map's pixel the detail follows the landform: on the Earth DEM (~39 km pixels), a
+/// DEM of 5 km cells departs from the map's bilinear surface by hundreds of metres in the
+/// Himalaya and by tens of metres on the West Siberian Plain (327 m against 30 m; 292 against
+/// 58 with the range of 15 % of the edge everywhere that came before).
+#[test]
+fn detail_below_the_map_follows_the_landform() {
+    use crate::export::dem::{sample_dem, DemRequest, DEFAULT_MAX_DEM_PIXELS};
+    let (Some(planet), Some(map)) = (earth(), map_file("maps/earth_etopo5_1024x512.tif")) else { return };
+    let tiles = crate::export::tiles::PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
+    let detail = |(w, s, e, n): (f64, f64, f64, f64)| {
+        let (cols, rows) = (((e - w) / 0.05) as u32, ((n - s) / 0.05) as u32);
+        let req = DemRequest::new(&format!("{w},{s},{e},{n}"), cols, Some(rows), DEFAULT_MAX_DEM_PIXELS).unwrap();
+        let dem = sample_dem(&tiles, &req);
+        let mut d = Vec::new();
+        for r in 0..rows {
+            for c in 0..cols {
+                let k = (r * cols + c) as usize;
+                let lon = w + (f64::from(c) + 0.5) * 0.05;
+                let lat = n - (f64::from(r) + 0.5) * 0.05;
+                if dem.water[k].is_nan() {
+                    d.push(f64::from(dem.ground[k]) - f64::from(map.sample(lat, lon).unwrap()));
+                }
+            }
+        }
+        let m = d.iter().sum::<f64>() / d.len() as f64;
+        (d.iter().map(|x| (x - m).powi(2)).sum::<f64>() / d.len() as f64).sqrt()
+    };
+    let himalaya = detail((84.0, 28.0, 88.0, 31.0));
+    let siberia = detail((70.0, 58.0, 74.0, 61.0));
+    println!("detail std: Himalaya {himalaya:.0} m, West Siberian Plain {siberia:.0} m");
+    assert!(himalaya > 8.0 * siberia && siberia < 45.0, "Himalaya {himalaya:.0} m, West Siberia {siberia:.0} m");
+}
