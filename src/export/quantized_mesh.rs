@@ -19,8 +19,11 @@
 //! edge index lists, close the gap. On and beside the octahedron's edges themselves (the
 //! equator, the meridians 0°, 90°E, 180° and 90°W, zooms 2-7: the ignored test
 //! `earth_borders_on_octahedron_edges`) 22 of 528 sides differ, by 0.5-218 m, 18 of them in the
-//! row at the south pole, where every tile's refinement reaches the pole and the bisection
-//! closure of one tile's region splits faces in its neighbour's border strip.
+//! row at the south pole, anywhere along the side: there a cell is far narrower east-west than
+//! north-south, the refinement's edges (a quarter of the north-south cell and longer) are longer
+//! than the margin's 8 cells of longitude, and the faces along a border reach past the margin
+//! into regions that the two tiles refine differently. A margin in metres would mean refining
+//! the whole polar cap for the tiles at the pole; not done.
 //!
 //! **Extensions**, written when the request's `Accept` asks for them (the static export writes
 //! all three): `octvertexnormals` (normals from central differences of the grid and a ring of

@@ -320,14 +320,17 @@ fn earth_borders_on_octahedron_edges() {
             let (other, sa, sb) = if east { (get(z, (x + 1) % w, y), 2, 0) } else { (get(z, x, y + 1), 3, 1) };
             let (a, b) = (side_heights(&here, sa), side_heights(&other, sb));
             let tol = here.step().max(other.step()) + 1e-3;
-            let worst = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).fold(0.0, f64::max);
+            let diffs: Vec<f64> = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).collect();
+            let worst = diffs.iter().copied().fold(0.0, f64::max);
+            let at: Vec<usize> = (0..diffs.len()).filter(|&i| diffs[i] > tol).collect();
             checked += 1;
             if worst > tol {
                 bad += 1;
                 let b = tile_bounds(z, x, y).unwrap();
                 println!(
-                    "{z}/{x}/{y} {} side: worst {worst:.1} m (bounds {:?})",
+                    "{z}/{x}/{y} {} side: worst {worst:.1} m at {at:?} of {} (bounds {:?})",
                     if east { "east" } else { "north" },
+                    diffs.len(),
                     b
                 );
             }
