@@ -104,6 +104,7 @@ struct SplitParams {
     relief_length: f64,
     smooth_length: f64,
     threshold: f64,
+    map_relief: f64,
     ridge: f64,
     // Slots where the new vertices, edges and faces start.
     vertices: u32,

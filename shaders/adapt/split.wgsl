@@ -170,7 +170,16 @@ fn guide_dot(a: vec3<f64>, b: vec3<f64>) -> f64 {
     return (a.x * b.x + a.y * b.y) + a.z * b.z;
 }
 
-fn guide_at(d: vec3<f64>) -> Guided {
+// The cell of the guide's grid under unit direction `d` (`Guide::cell`): the index of the
+// lower corner of the four cells `guide_at` interpolates between, and the fractions.
+struct GuideCell {
+    found: bool,
+    at: u32,
+    fx: f64,
+    fy: f64,
+}
+
+fn guide_cell(d: vec3<f64>) -> GuideCell {
     var best = 0u;
     var best_k = -F64_MAX;
     for (var i = 0u; i < p.guide_faces; i++) {
@@ -181,7 +190,7 @@ fn guide_at(d: vec3<f64>) -> Guided {
         }
     }
     if p.guide_faces == 0u || best_k <= 0.0lf {
-        return Guided(false, 0.0lf);
+        return GuideCell(false, 0u, 0.0lf, 0.0lf);
     }
     let f = guide_faces[best];
     let x = guide_dot(f.east, d) / best_k;
@@ -191,17 +200,39 @@ fn guide_at(d: vec3<f64>) -> Guided {
     let gy = min(max((y - f.y0) / f.step - p.half, 0.0lf), side - p.one);
     let ix = min(floor(gx), side - 2.0lf);
     let iy = min(floor(gy), side - 2.0lf);
-    let fx = gx - ix;
-    let fy = gy - iy;
     let at = best * p.guide_side * p.guide_side + u32(iy) * p.guide_side + u32(ix);
-    let v00 = f64(guide_values[at]);
-    let v10 = f64(guide_values[at + 1u]);
-    let v01 = f64(guide_values[at + p.guide_side]);
-    let v11 = f64(guide_values[at + p.guide_side + 1u]);
-    let a = v00 + (v10 - v00) * fx;
-    let b = v01 + (v11 - v01) * fx;
+    return GuideCell(true, at, gx - ix, gy - iy);
+}
+
+fn guide_at(d: vec3<f64>) -> Guided {
+    let c = guide_cell(d);
+    if !c.found {
+        return Guided(false, 0.0lf);
+    }
+    let v00 = f64(guide_values[c.at]);
+    let v10 = f64(guide_values[c.at + 1u]);
+    let v01 = f64(guide_values[c.at + p.guide_side]);
+    let v11 = f64(guide_values[c.at + p.guide_side + 1u]);
+    let a = v00 + (v10 - v00) * c.fx;
+    let b = v01 + (v11 - v01) * c.fx;
     let missing = min(min(v00, v10), min(v01, v11)) < -1.0e29lf;
-    return Guided(!missing, a + (b - a) * fy);
+    return Guided(!missing, a + (b - a) * c.fy);
+}
+
+// `Guide::relief_at`: the twist of the map's bilinear patch under `d` (0 without data).
+fn guide_twist(d: vec3<f64>) -> f64 {
+    let c = guide_cell(d);
+    if !c.found {
+        return 0.0lf;
+    }
+    let v00 = f64(guide_values[c.at]);
+    let v10 = f64(guide_values[c.at + 1u]);
+    let v01 = f64(guide_values[c.at + p.guide_side]);
+    let v11 = f64(guide_values[c.at + p.guide_side + 1u]);
+    if min(min(v00, v10), min(v01, v11)) < -1.0e29lf {
+        return 0.0lf;
+    }
+    return abs((v00 + v11) - (v10 + v01));
 }
 
 fn edge_centre(s: Site) -> vec3<f64> {
@@ -358,7 +389,7 @@ fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
 
 // `landform_range` and `landform_ground` (`src/mesh/split/landform.rs`): the diamond's mean,
 // its ridge term and the landform's random offset; `g` is the ground at `[a, t, b, d]`.
-fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32) -> f64 {
+fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, map_pixel: f64) -> f64 {
     let a = g[0];
     let t = g[1];
     let b = g[2];
@@ -374,8 +405,12 @@ fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32) -> f64 {
     let floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length);
     let relief = edge_len * (p.relief * slope + p.altitude_gain * max(mean - p.sea_level, 0.0lf)) * (p.hybrid + height);
     let threshold = max(p.one - slope / (p.threshold * p.ground_slope), 0.0lf);
+    var mapped = 0.0lf;
+    if map_pixel > 0.0lf {
+        mapped = p.map_relief * map_relief * sqrt(edge_len / map_pixel);
+    }
     let fade = edge_len / (edge_len + p.smooth_length);
-    let range = (floor + relief) * threshold / (p.one + edge_len / p.relief_length) * fade;
+    let range = (floor + relief + mapped) * threshold / (p.one + edge_len / p.relief_length) * fade;
     let ridge = (a + b) * p.half - (t + d) * p.half;
     let n = unit(seed, SALT_ALTITUDE) + unit(seed, SALT_DETAIL) - p.one;
     return mean + p.ridge * threshold * ridge + range * p.half * n;
@@ -458,7 +493,13 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     if mapped.found {
         wanted = p.sea_level + mapped.metres;
     } else {
-        wanted = landform_ground(grounds, edge_len, seed);
+        var map_relief = 0.0lf;
+        var map_pixel = 0.0lf;
+        if p.guide_faces > 0u {
+            map_relief = guide_twist(at_unit);
+            map_pixel = p.guide_min_edge;
+        }
+        wanted = landform_ground(grounds, edge_len, seed, map_relief, map_pixel);
     }
     let lo = max(bank_lo, slope_lo);
     var g: f64;

@@ -150,8 +150,9 @@ impl Guide {
         Some(Guide { faces, side, values, min_edge_m: pixel * radius })
     }
 
-    /// Metres relative to sea level the map asks for in unit direction `d`, if it has data there.
-    pub fn at(&self, d: DVec3) -> Option<f64> {
+    /// The grid index of the cell at the lower corner of the four [`Guide::at`] interpolates
+    /// between for unit direction `d`, and the fractions towards the other three.
+    fn cell(&self, d: DVec3) -> Option<(usize, f64, f64)> {
         let mut best = 0usize;
         let mut best_k = f64::MIN;
         for (i, f) in self.faces.iter().enumerate() {
@@ -176,6 +177,12 @@ impl Guide {
         let (ix, iy) = (gx.floor().min(side - 2.0), gy.floor().min(side - 2.0));
         let (fx, fy) = (gx - ix, gy - iy);
         let at = best * (self.side * self.side) as usize + iy as usize * self.side as usize + ix as usize;
+        Some((at, fx, fy))
+    }
+
+    /// Metres relative to sea level the map asks for in unit direction `d`, if it has data there.
+    pub fn at(&self, d: DVec3) -> Option<f64> {
+        let (at, fx, fy) = self.cell(d)?;
         let s = self.side as usize;
         let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
         // Written out as `split.wgsl` computes it.
@@ -183,6 +190,20 @@ impl Guide {
         let b = v01 + (v11 - v01) * fx;
         let missing = [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29);
         (!missing).then_some(a + (b - a) * fy)
+    }
+
+    /// The map's roughness within one cell at unit direction `d`: the twist of the bilinear
+    /// patch [`Guide::at`] interpolates on, `|v00 + v11 - v10 - v01|` — zero on a plane however
+    /// steep, large across crests, saddles and valleys (0 without data). `split.wgsl`'s
+    /// `guide_twist` is its twin.
+    pub fn relief_at(&self, d: DVec3) -> f64 {
+        let Some((at, _, _)) = self.cell(d) else { return 0.0 };
+        let s = self.side as usize;
+        let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
+        if [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29) {
+            return 0.0;
+        }
+        ((v00 + v11) - (v10 + v01)).abs()
     }
 }
 

@@ -59,6 +59,7 @@ impl SplitParams {
             relief_length: landform::RELIEF_LENGTH,
             smooth_length: landform::SMOOTH_LENGTH,
             threshold: landform::THRESHOLD,
+            map_relief: landform::MAP_RELIEF,
             ridge: landform::RIDGE,
             vertices: lens.0 as u32,
             edges: lens.1 as u32,

@@ -226,7 +226,10 @@ fn continent_vertex(
     let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and_then(|g| g.at(dir));
     let wanted = match mapped {
         Some(m) => p.sea_level_m + m,
-        None => landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope()),
+        None => {
+            let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
+            landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope(), map)
+        }
     };
     let lo = bank_lo.max(slope_lo);
     let g = if any_lo > hi {

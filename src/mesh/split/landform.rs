@@ -11,6 +11,11 @@
 //!   hillslope, where landslides stop further steepening (and eq. 12 stays satisfiable). As one level's offsets steepen
 //!   the diamonds of the next, roughness cascades as in a multifractal: steep ground grows
 //!   steeper detail, flat ground stays flat.
+//! - **The map's roughness.** Under an elevation map, the roughness of the map's pixel at the
+//!   vertex (the twist of its bilinear patch, zero on planes: `Guide::relief_at`) adds
+//!   [`MAP_RELIEF`] times itself at one pixel, falling with the square root of the edge: where
+//!   the map is rugged, the ground stays rugged below its resolution, however gentle the
+//!   diamond the splits have smoothed so far.
 //! - **Hybrid.** The range is larger where the diamond's centre stands high in its own range
 //!   than low in it ([`HYBRID`]): valley floors stay smooth, crests and summits rough (the hybrid
 //!   multifractal weights each octave by the signal so far).
@@ -23,8 +28,9 @@
 //!   flattens for edges beyond [`RELIEF_LENGTH`], whose relief the base mesh already holds, and
 //!   fades below [`SMOOTH_LENGTH`].
 //!
-//! Everything is a function of the four corners' ground, the edge's length, the sea level and
-//! the vertex seed, with `+ - * /`, `min`, `max` and `abs` in `f64` only, so `split.wgsl`'s
+//! Everything is a function of the four corners' ground, the edge's length, the sea level, the
+//! map's pixel at the vertex and the vertex seed, with `+ - * /`, `sqrt`, `min`, `max` and `abs`
+//! in `f64` only, so `split.wgsl`'s
 //! `landform_ground` gives the same bits, and views, tiles and DEMs the same vertex whatever the
 //! path that made it.
 
@@ -43,6 +49,9 @@ pub const ALTITUDE: f64 = 3.0e-6;
 pub const HYBRID: f64 = 0.5;
 /// Edge length at which the whole range has flattened to half.
 pub const RELIEF_LENGTH: f64 = 200_000.0;
+/// The range per metre of the map's roughness within a pixel (`Guide::relief_at`), at an edge
+/// one map pixel long; it falls with the square root of the edge below that.
+pub const MAP_RELIEF: f64 = 2.0;
 /// The share of eq. 12's steepest slope `s_g` at which a diamond's detail has faded to nothing.
 pub const THRESHOLD: f64 = 0.35;
 /// Below about this edge length the range falls faster than the edge, so that the ground is
@@ -54,9 +63,11 @@ pub const SMOOTH_LENGTH: f64 = 20.0;
 pub const RIDGE: f64 = 0.25;
 
 /// Full range of the offset at a continent split of an edge `edge_len` long whose diamond has
-/// the ground `g` at `[a, t, b, d]` (the split edge runs `a -> b`); also the diamond's mean and
+/// the ground `g` at `[a, t, b, d]` (the split edge runs `a -> b`), under an elevation map's
+/// pixel whose roughness is `map[0]` metres and width `map[1]` metres (`[0, 0]` without a
+/// map); also the diamond's mean and
 /// the share of the detail its steepness leaves (1 on flat ground, 0 at a threshold hillslope).
-pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64) -> (f64, f64, f64) {
+pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64, map: [f64; 2]) -> (f64, f64, f64) {
     let [a, t, b, d] = g;
     let mean = ((a + b) * 0.5 + (t + d) * 0.5) * 0.5;
     let lo = a.min(t).min(b.min(d));
@@ -68,16 +79,19 @@ pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64) -> (
     let height = if hi > lo { (mean - lo) / (hi - lo) } else { 0.5 };
     let floor = FLOOR_SLOPE * edge_len / (1.0 + edge_len / FLOOR_LENGTH);
     let relief = edge_len * (RELIEF * slope + ALTITUDE * (mean - sea).max(0.0)) * (HYBRID + height);
+    // The map's own roughness within a pixel (`map[0]` metres, pixels `map[1]` metres wide),
+    // carried down as real relief falls below a map's pixel: with the square root of the scale.
+    let mapped = if map[1] > 0.0 { MAP_RELIEF * map[0] * (edge_len / map[1]).sqrt() } else { 0.0 };
     // Ground near the steepest slope allowed gains no more detail: a threshold hillslope.
     let threshold = (1.0 - slope / (THRESHOLD * max_slope)).max(0.0);
     let fade = edge_len / (edge_len + SMOOTH_LENGTH);
-    ((floor + relief) * threshold / (1.0 + edge_len / RELIEF_LENGTH) * fade, mean, threshold)
+    ((floor + relief + mapped) * threshold / (1.0 + edge_len / RELIEF_LENGTH) * fade, mean, threshold)
 }
 
 /// The ground wanted at a continent split below the map's resolution: the diamond's mean, the
 /// ridge term and the landform's random offset (triangular: the sum of two uniforms).
-pub fn landform_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64) -> f64 {
-    let (range, mean, threshold) = landform_range(g, edge_len, sea, max_slope);
+pub fn landform_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64, map: [f64; 2]) -> f64 {
+    let (range, mean, threshold) = landform_range(g, edge_len, sea, max_slope, map);
     let [a, t, b, d] = g;
     let ridge = (a + b) * 0.5 - (t + d) * 0.5;
     let n = unit(seed, salt::ALTITUDE) + unit(seed, salt::DETAIL) - 1.0;
@@ -94,17 +108,18 @@ mod tests {
     #[test]
     fn steep_ground_gets_more_detail_than_flat_ground() {
         let len = 1_000.0;
-        let (flat, ..) = landform_range([SEA + 100.0; 4], len, SEA, S_G);
-        let (hills, ..) = landform_range([SEA + 100.0, SEA + 130.0, SEA + 150.0, SEA + 120.0], len, SEA, S_G);
-        let (alps, ..) = landform_range([SEA + 1_500.0, SEA + 1_560.0, SEA + 1_620.0, SEA + 1_550.0], len, SEA, S_G);
+        let (flat, ..) = landform_range([SEA + 100.0; 4], len, SEA, S_G, [0.0; 2]);
+        let (hills, ..) = landform_range([SEA + 100.0, SEA + 130.0, SEA + 150.0, SEA + 120.0], len, SEA, S_G, [0.0; 2]);
+        let (alps, ..) =
+            landform_range([SEA + 1_500.0, SEA + 1_560.0, SEA + 1_620.0, SEA + 1_550.0], len, SEA, S_G, [0.0; 2]);
         assert!(flat < 100.0 && flat > 0.0, "{flat}");
         assert!(hills > 1.5 * flat, "{hills} vs {flat}");
         assert!(alps > 1.2 * hills, "{alps} vs {hills}");
         // A threshold hillslope gains nothing.
-        let (cliff, ..) = landform_range([SEA, SEA + 200.0, SEA + 400.0, SEA + 200.0], len, SEA, S_G);
+        let (cliff, ..) = landform_range([SEA, SEA + 200.0, SEA + 400.0, SEA + 200.0], len, SEA, S_G, [0.0; 2]);
         assert_eq!(cliff, 0.0);
         // A high plateau, flat on the map, is rougher than a lowland plain.
-        let (tibet, ..) = landform_range([SEA + 4_500.0; 4], len, SEA, S_G);
+        let (tibet, ..) = landform_range([SEA + 4_500.0; 4], len, SEA, S_G, [0.0; 2]);
         assert!(tibet > 1.1 * flat, "{tibet} vs {flat}");
     }
 
@@ -112,7 +127,14 @@ mod tests {
     fn detail_falls_with_scale_and_flattens_for_long_edges() {
         let g = |len: f64| {
             let rise = 0.1 * len; // the same slope at every scale
-            landform_range([SEA + 1_000.0, SEA + 1_000.0 + rise, SEA + 1_000.0 + rise, SEA + 1_000.0], len, SEA, S_G).0
+            landform_range(
+                [SEA + 1_000.0, SEA + 1_000.0 + rise, SEA + 1_000.0 + rise, SEA + 1_000.0],
+                len,
+                SEA,
+                S_G,
+                [0.0; 2],
+            )
+            .0
         };
         assert!(g(100.0) < g(1_000.0) && g(1_000.0) < g(10_000.0));
         // Flattened beyond RELIEF_LENGTH: a 2,000 km edge gains less than ten times a 200 km one.
@@ -120,10 +142,24 @@ mod tests {
     }
 
     #[test]
+    fn a_rugged_map_pixel_keeps_its_ground_rugged_below_it() {
+        let g = [SEA + 500.0; 4];
+        let pixel = 40_000.0;
+        let (plain, ..) = landform_range(g, 10_000.0, SEA, S_G, [0.0, pixel]);
+        let (rugged, ..) = landform_range(g, 10_000.0, SEA, S_G, [800.0, pixel]);
+        assert!(rugged > plain + 0.9 * MAP_RELIEF * 800.0 * 0.5, "{rugged} vs {plain}");
+        // With the square root of the edge: a quarter of the edge, half of the map's share.
+        let (quarter, ..) = landform_range(g, 2_500.0, SEA, S_G, [800.0, pixel]);
+        let (quarter_plain, ..) = landform_range(g, 2_500.0, SEA, S_G, [0.0, pixel]);
+        let (share, share_quarter) = (rugged - plain, quarter - quarter_plain);
+        assert!((share_quarter / share - 0.5).abs() < 0.05, "{share} {share_quarter}");
+    }
+
+    #[test]
     fn crests_rise_and_valleys_sink() {
         let len = 1_000.0;
         // The same four altitudes, the split edge once along the crest and once across it.
-        let mean = |g: [f64; 4]| (0..256).map(|s| landform_ground(g, len, s, SEA, S_G)).sum::<f64>() / 256.0;
+        let mean = |g: [f64; 4]| (0..256).map(|s| landform_ground(g, len, s, SEA, S_G, [0.0; 2])).sum::<f64>() / 256.0;
         let c = mean([SEA + 600.0, SEA + 500.0, SEA + 600.0, SEA + 500.0]);
         let v = mean([SEA + 500.0, SEA + 600.0, SEA + 500.0, SEA + 600.0]);
         let lift = RIDGE * (1.0 - 0.1 / THRESHOLD) * 50.0;
@@ -134,10 +170,10 @@ mod tests {
     #[test]
     fn the_offset_stays_within_its_range() {
         let g = [SEA + 1_000.0, SEA + 1_300.0, SEA + 1_100.0, SEA + 1_250.0];
-        let (range, mean, threshold) = landform_range(g, 5_000.0, SEA, S_G);
+        let (range, mean, threshold) = landform_range(g, 5_000.0, SEA, S_G, [0.0; 2]);
         let ridge = RIDGE * threshold * ((g[0] + g[2]) * 0.5 - (g[1] + g[3]) * 0.5);
         for s in 0..1_000 {
-            let x = landform_ground(g, 5_000.0, s, SEA, S_G) - mean - ridge;
+            let x = landform_ground(g, 5_000.0, s, SEA, S_G, [0.0; 2]) - mean - ridge;
             assert!(x.abs() <= range * 0.5, "{x} {range}");
         }
     }
