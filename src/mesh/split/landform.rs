@@ -3,14 +3,14 @@
 //! amplification by landform). A continent split that no map resolves takes its diamond's mean
 //! ground plus an offset whose size and sign follow the diamond's own landform:
 //!
-//! - **Relief.** The offset's range grows with the diamond's slope (the steeper of its two
-//!   diagonals) times the edge, and with its altitude above the sea: mountains gain rugged
-//!   detail, hills some, and plains, deltas and coastal lowlands little beyond a floor of a few
-//!   metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres). Ground nearing the steepest
-//!   slope allowed (eq. 12's `s_g`, by [`THRESHOLD`]) gains less and at last none: a threshold
-//!   hillslope, where landslides stop further steepening (and eq. 12 stays satisfiable). As one level's offsets steepen
-//!   the diamonds of the next, roughness cascades as in a multifractal: steep ground grows
-//!   steeper detail, flat ground stays flat.
+//! - **Relief.** The offset's range grows with the diamond's slope (its relief, highest corner
+//!   less lowest, over the edge) times the edge, and with its altitude above the sea: mountains
+//!   gain rugged detail, hills some, and plains, deltas and coastal lowlands little beyond a
+//!   floor of a few metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres). Ground nearing
+//!   the steepest slope allowed (eq. 12's `s_g`, by [`THRESHOLD`]) gains less and at last none:
+//!   a threshold hillslope, where landslides stop further steepening (and eq. 12 stays
+//!   satisfiable). As one level's offsets steepen the diamonds of the next, roughness cascades
+//!   as in a multifractal: steep ground grows steeper detail, flat ground stays flat.
 //! - **The map's roughness.** Under an elevation map, the roughness of the map's pixel at the
 //!   vertex (the twist of its bilinear patch, zero on planes: `Guide::relief_at`) adds
 //!   [`MAP_RELIEF`] times itself at one pixel, falling with the square root of the edge: where
@@ -24,15 +24,15 @@
 //!   sharpen and valleys deepen instead of rounding off.
 //! - **Scale.** The range falls with the edge as real relief does below a map's pixel (the
 //!   constants were fitted with `tools/landforms.py` against the Jacksboro 90 m DEM and crops of
-//!   the Earth DEM: detail and median slope within the goals' ranges, docs/realism.md), and
+//!   the Earth DEM: detail and median slope within the goals' ranges on most cases,
+//!   docs/realism.md), and
 //!   flattens for edges beyond [`RELIEF_LENGTH`], whose relief the base mesh already holds, and
 //!   fades below [`SMOOTH_LENGTH`].
 //!
 //! Everything is a function of the four corners' ground, the edge's length, the sea level, the
 //! map's pixel at the vertex and the vertex seed, with `+ - * /`, `sqrt`, `min`, `max` and `abs`
-//! in `f64` only, so `split.wgsl`'s
-//! `landform_ground` gives the same bits, and views, tiles and DEMs the same vertex whatever the
-//! path that made it.
+//! in `f64` only, so `split.wgsl`'s `landform_ground` gives the same bits, and views, tiles and
+//! DEMs the same vertex whatever the path that made it.
 
 use crate::rng::{salt, unit};
 
@@ -65,8 +65,8 @@ pub const RIDGE: f64 = 0.25;
 /// Full range of the offset at a continent split of an edge `edge_len` long whose diamond has
 /// the ground `g` at `[a, t, b, d]` (the split edge runs `a -> b`), under an elevation map's
 /// pixel whose roughness is `map[0]` metres and width `map[1]` metres (`[0, 0]` without a
-/// map); also the diamond's mean and
-/// the share of the detail its steepness leaves (1 on flat ground, 0 at a threshold hillslope).
+/// map); also the diamond's mean and the share of the detail its steepness leaves (1 on flat
+/// ground, 0 at a threshold hillslope).
 pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64, map: [f64; 2]) -> (f64, f64, f64) {
     let [a, t, b, d] = g;
     let mean = ((a + b) * 0.5 + (t + d) * 0.5) * 0.5;
