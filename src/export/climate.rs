@@ -10,9 +10,13 @@
 //! tree line lies at three quarters of the snow line's altitude. Both blends are smooth, over
 //! ±300 m (rock) and ±150 m (snow), so the texture has no hard bands.
 //!
-//! The lines sit higher than Earth's because the paper's planets are higher: with Table 2's
-//! defaults land reaches `a_max_mountain - epsilon_sea` = 10 km above sea level and half of it
-//! lies above about 4.5 km, so an Earth snow line would whiten most continents.
+//! For the paper's preset the lines sit higher than Earth's because its planets are higher: with
+//! Table 2's defaults land reaches `a_max_mountain - epsilon_sea` = 10 km above sea level and
+//! half of it lies above about 4.5 km, so an Earth snow line would whiten most continents. The
+//! Earth preset, whose land lies at Earth's altitudes (a real DEM's, or a random planet's median
+//! of ~580 m), takes Earth's climatic snow line instead ([`EARTH_SNOW_LINE`]: ~4.9 km at the
+//! equator, ~5.6 km in the dry subtropics and Tibet, ~2.9 km at the Alps' 46°, ~1.2 km at 62°, sea level
+//! near 76°), scaled for the other climates by their `snow_eq` against the temperate one's.
 //!
 //! | climate   | belts by absolute latitude (key points, °)                           | snow_eq | ice_lat |
 //! |-----------|----------------------------------------------------------------------|---------|---------|
@@ -26,7 +30,7 @@
 //! snow (250, 250, 252). Sea: `water_colour` runs from (120, 190, 215) at the coast to
 //! (10, 30, 90) at 6000 m depth along a square-root curve (shelves stay light).
 
-use crate::params::Climate;
+use crate::params::{Climate, Params, Preset};
 
 type Rgb = [f64; 3];
 
@@ -124,20 +128,79 @@ fn belt(belts: &[(f64, Rgb)], lat: f64) -> Rgb {
     belts[belts.len() - 1].1
 }
 
+/// What the colours depend on besides latitude and altitude: the climate, and the preset whose
+/// altitudes the snow line must suit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Palette {
+    pub climate: Climate,
+    pub preset: Preset,
+}
+
+impl Palette {
+    pub fn of(params: &Params) -> Palette {
+        Palette { climate: params.climate, preset: params.preset }
+    }
+
+    /// Every palette, for renderers that prepare their textures once.
+    pub const ALL: [Palette; 6] = {
+        let (e, p) = (Preset::Earth, Preset::Paper);
+        [
+            Palette { climate: Climate::Temperate, preset: e },
+            Palette { climate: Climate::Arid, preset: e },
+            Palette { climate: Climate::Frozen, preset: e },
+            Palette { climate: Climate::Temperate, preset: p },
+            Palette { climate: Climate::Arid, preset: p },
+            Palette { climate: Climate::Frozen, preset: p },
+        ]
+    };
+}
+
+/// Earth's climatic snow line (m above sea level) by absolute latitude (°), linear between:
+/// ~4.9 km in the wet tropics, ~5.6 km in the dry subtropics and continental interiors to 35°
+/// (the Andes' Puna and Tibet reach 6 km), ~2.9 km in the Alps, ~1.2 km in southern Norway, sea level
+/// in the high Arctic (after the compilations in Benn & Evans, *Glaciers and Glaciation*, 2010,
+/// and Ohmura et al. 1992). Below sea level poleward of 76°, so ice caps are white to the coast.
+pub const EARTH_SNOW_LINE: [(f64, f64); 11] = [
+    (0.0, 4_900.0),
+    (15.0, 5_200.0),
+    (25.0, 5_600.0),
+    (35.0, 5_600.0),
+    (40.0, 4_300.0),
+    (46.0, 2_900.0),
+    (55.0, 1_900.0),
+    (62.0, 1_200.0),
+    (70.0, 400.0),
+    (76.0, 0.0),
+    (90.0, -2_000.0),
+];
+
 /// Snow line altitude (m relative to sea level; negative poleward of the ice-cap latitude).
-pub fn snow_line_m(climate: Climate, lat_deg: f64) -> f64 {
-    let p = profile(climate);
-    let x = lat_deg.abs().min(90.0) / p.ice_lat;
-    p.snow_eq * (1.0 - x * x * x)
+pub fn snow_line_m(palette: Palette, lat_deg: f64) -> f64 {
+    let p = profile(palette.climate);
+    let lat = lat_deg.abs().min(90.0);
+    match palette.preset {
+        Preset::Paper => {
+            let x = lat / p.ice_lat;
+            p.snow_eq * (1.0 - x * x * x)
+        }
+        Preset::Earth => {
+            let scale = p.snow_eq / profile(Climate::Temperate).snow_eq;
+            let line = EARTH_SNOW_LINE
+                .windows(2)
+                .find(|w| lat <= w[1].0)
+                .map_or(EARTH_SNOW_LINE[10].1, |w| w[0].1 + (w[1].1 - w[0].1) * (lat - w[0].0) / (w[1].0 - w[0].0));
+            line * scale
+        }
+    }
 }
 
 /// Land colour for a latitude (degrees) and a ground altitude (metres relative to sea level).
-pub fn climate_colour(climate: Climate, lat_deg: f64, altitude_m: f64) -> [u8; 3] {
-    let p = profile(climate);
+pub fn climate_colour(palette: Palette, lat_deg: f64, altitude_m: f64) -> [u8; 3] {
+    let p = profile(palette.climate);
     let lat = if lat_deg.is_finite() { lat_deg } else { 0.0 };
     let alt = if altitude_m.is_finite() { altitude_m } else { 0.0 };
     let base = belt(p.belts, lat);
-    let snow = snow_line_m(climate, lat);
+    let snow = snow_line_m(palette, lat);
     let tree = snow * TREE_SHARE;
     let tinted = if tree > 0.0 { mix(base, ROCK, HIGHLAND_TINT * smoothstep(0.0, tree, alt)) } else { base };
     let rocky = mix(tinted, ROCK, smoothstep(tree - 300.0, tree + 300.0, alt));
@@ -153,7 +216,7 @@ pub fn water_colour(depth_m: f64) -> [u8; 3] {
 /// The lookup as an RGBA8 texture (row-major, `width * height * 4` bytes): x runs over the
 /// altitude from -500 m to 9000 m, y over the latitude from 90°N (row 0) to 90°S, sampled at
 /// pixel centres. Alpha is 255.
-pub fn climate_texture(climate: Climate, width: u32, height: u32) -> Vec<u8> {
+pub fn climate_texture(palette: Palette, width: u32, height: u32) -> Vec<u8> {
     let (w, h) = (width as usize, height as usize);
     let mut out = Vec::with_capacity(w * h * 4);
     let span = TEXTURE_MAX_ALTITUDE_M - TEXTURE_MIN_ALTITUDE_M;
@@ -161,7 +224,7 @@ pub fn climate_texture(climate: Climate, width: u32, height: u32) -> Vec<u8> {
         let lat = 90.0 - (y as f64 + 0.5) * 180.0 / h as f64;
         for x in 0..w {
             let alt = TEXTURE_MIN_ALTITUDE_M + (x as f64 + 0.5) * span / w as f64;
-            let [r, g, b] = climate_colour(climate, lat, alt);
+            let [r, g, b] = climate_colour(palette, lat, alt);
             out.extend_from_slice(&[r, g, b, 255]);
         }
     }
@@ -172,13 +235,22 @@ pub fn climate_texture(climate: Climate, width: u32, height: u32) -> Vec<u8> {
 mod tests {
     use super::*;
 
+    /// The paper preset's palette of `climate`.
+    fn paper(climate: Climate) -> Palette {
+        Palette { climate, preset: Preset::Paper }
+    }
+
+    fn earth(climate: Climate) -> Palette {
+        Palette { climate, preset: Preset::Earth }
+    }
+
     fn close(a: [u8; 3], b: Rgb, tol: i32) -> bool {
         a.iter().zip(b).all(|(&x, y)| (x as i32 - y as i32).abs() <= tol)
     }
 
     #[test]
     fn belts_follow_latitude() {
-        let t = Climate::Temperate;
+        let t = paper(Climate::Temperate);
         assert!(close(climate_colour(t, 0.0, 100.0), TROPICAL, 1));
         assert!(close(climate_colour(t, 25.0, 100.0), DESERT, 1));
         assert!(close(climate_colour(t, -25.0, 100.0), DESERT, 1), "symmetric in latitude");
@@ -192,25 +264,49 @@ mod tests {
         for c in [Climate::Temperate, Climate::Arid, Climate::Frozen] {
             let mut last = f64::INFINITY;
             for lat in 0..=90 {
-                let s = snow_line_m(c, lat as f64);
+                let s = snow_line_m(paper(c), lat as f64);
                 assert!(s <= last);
                 last = s;
             }
-            assert!(close(climate_colour(c, 0.0, 9000.0), SNOW, 1), "{c:?}");
+            assert!(close(climate_colour(paper(c), 0.0, 9000.0), SNOW, 1), "{c:?}");
         }
         // Rock between tree line and snow line at the equator.
-        assert!(close(climate_colour(Climate::Temperate, 0.0, 6500.0), ROCK, 1));
+        assert!(close(climate_colour(paper(Climate::Temperate), 0.0, 6500.0), ROCK, 1));
+    }
+
+    #[test]
+    fn the_earth_preset_has_earths_snow_line() {
+        let t = earth(Climate::Temperate);
+        // Alps (46°N): snow at 3,200 m, none at 2,400 m; the paper's line is far higher there.
+        assert!(close(climate_colour(t, 46.0, 3_200.0), SNOW, 30));
+        assert!(!close(climate_colour(t, 46.0, 2_400.0), SNOW, 30));
+        assert!(!close(climate_colour(paper(Climate::Temperate), 46.0, 3_200.0), SNOW, 30));
+        // Himalaya (28°N): snow on the 6 km crests, none on a 4.8 km plateau.
+        assert!(close(climate_colour(t, 28.0, 6_000.0), SNOW, 30));
+        assert!(!close(climate_colour(t, 28.0, 4_800.0), SNOW, 30));
+        // Norway (62°N): snow at 1,500 m. Greenland's coast (78°N): ice.
+        assert!(close(climate_colour(t, 62.0, 1_500.0), SNOW, 30));
+        assert!(snow_line_m(t, 78.0) < 0.0);
+        // Poleward of the subtropics the line only falls; drier climates raise it.
+        let mut last = f64::INFINITY;
+        for lat in 25..=90 {
+            let s = snow_line_m(t, lat as f64);
+            assert!(s <= last, "{lat}");
+            last = s;
+        }
+        assert!(snow_line_m(earth(Climate::Arid), 30.0) > snow_line_m(t, 30.0));
+        assert!(snow_line_m(earth(Climate::Frozen), 30.0) < snow_line_m(t, 30.0));
     }
 
     #[test]
     fn climates_shift_the_belts() {
         // Arid has desert where temperate has forest; frozen has ice where temperate has forest.
-        assert!(close(climate_colour(Climate::Arid, 40.0, 100.0), DESERT, 1));
-        assert!(close(climate_colour(Climate::Frozen, 60.0, 100.0), SNOW, 1));
-        assert!(close(climate_colour(Climate::Arid, 0.0, 7200.0), ROCK, 1));
-        assert!(close(climate_colour(Climate::Temperate, 0.0, 8000.0), SNOW, 1));
-        assert!(close(climate_colour(Climate::Temperate, 55.0, 100.0), FOREST, 1));
-        assert!(close(climate_colour(Climate::Temperate, 66.0, 10.0), TUNDRA, 1));
+        assert!(close(climate_colour(paper(Climate::Arid), 40.0, 100.0), DESERT, 1));
+        assert!(close(climate_colour(paper(Climate::Frozen), 60.0, 100.0), SNOW, 1));
+        assert!(close(climate_colour(paper(Climate::Arid), 0.0, 7200.0), ROCK, 1));
+        assert!(close(climate_colour(paper(Climate::Temperate), 0.0, 8000.0), SNOW, 1));
+        assert!(close(climate_colour(paper(Climate::Temperate), 55.0, 100.0), FOREST, 1));
+        assert!(close(climate_colour(paper(Climate::Temperate), 66.0, 10.0), TUNDRA, 1));
     }
 
     #[test]
@@ -230,7 +326,7 @@ mod tests {
     #[test]
     fn texture_axes() {
         let (w, h) = (64u32, 32u32);
-        let tex = climate_texture(Climate::Temperate, w, h);
+        let tex = climate_texture(paper(Climate::Temperate), w, h);
         assert_eq!(tex.len(), (w * h * 4) as usize);
         assert!(tex.chunks(4).all(|p| p[3] == 255));
         let at = |x: u32, y: u32| {
@@ -243,6 +339,6 @@ mod tests {
         // Low altitude at 25°N (row ~ 9) is desert.
         let y = ((90.0 - 25.0) / 180.0 * h as f64) as u32;
         assert!(close(at(3, y), DESERT, 25));
-        assert_eq!(tex, climate_texture(Climate::Temperate, w, h));
+        assert_eq!(tex, climate_texture(paper(Climate::Temperate), w, h));
     }
 }

@@ -4,8 +4,7 @@
 
 use super::scene::{FrameUniforms, LineVertex, RenderVertex, Scene};
 use super::RenderError;
-use crate::export::climate::{climate_texture, water_colour};
-use crate::params::Climate;
+use crate::export::climate::{climate_texture, water_colour, Palette};
 use std::sync::Mutex;
 use wgpu::util::DeviceExt;
 
@@ -30,7 +29,7 @@ pub struct Renderer {
     rivers: wgpu::RenderPipeline,
     sampler: wgpu::Sampler,
     ramp: wgpu::TextureView,
-    climates: Vec<(Climate, wgpu::TextureView)>,
+    climates: Vec<(Palette, wgpu::TextureView)>,
     frame_lock: Mutex<()>,
 }
 
@@ -202,7 +201,7 @@ impl Renderer {
             })
             .collect();
         let ramp = upload(&device, &queue, "water ramp", RAMP_SIZE, 1, &ramp);
-        let climates = [Climate::Temperate, Climate::Arid, Climate::Frozen]
+        let climates = Palette::ALL
             .into_iter()
             .map(|c| {
                 let (w, h) = CLIMATE_SIZE;
@@ -236,7 +235,7 @@ impl Renderer {
     }
 
     /// Draws `scene` at `width` x `height` and returns tightly packed sRGB RGBA8 rows, top first.
-    pub fn draw(&self, scene: &Scene, climate: Climate, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
+    pub fn draw(&self, scene: &Scene, palette: Palette, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
         let limits = self.device.limits();
         let vertex_bytes = (scene.vertices.len() * std::mem::size_of::<RenderVertex>()) as u64;
         if vertex_bytes > limits.max_buffer_size || (scene.terrain.len() * 4) as u64 > limits.max_buffer_size {
@@ -255,7 +254,7 @@ impl Renderer {
         let _frame = self.frame_lock.lock().unwrap_or_else(|e| e.into_inner());
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let pixels = self.encode_and_read(scene, climate, width, height);
+        let pixels = self.encode_and_read(scene, palette, width, height);
         let invalid = futures::executor::block_on(validation.pop());
         let oom = futures::executor::block_on(scope.pop());
         if let Some(e) = oom {
@@ -270,7 +269,7 @@ impl Renderer {
     fn encode_and_read(
         &self,
         scene: &Scene,
-        climate: Climate,
+        palette: Palette,
         width: u32,
         height: u32,
     ) -> Result<Vec<u8>, RenderError> {
@@ -301,7 +300,7 @@ impl Renderer {
         let terrain = buffer("terrain", bytemuck::cast_slice(&scene.terrain), wgpu::BufferUsages::INDEX);
         let water = buffer("water", bytemuck::cast_slice(&scene.water), wgpu::BufferUsages::INDEX);
         let rivers = buffer("rivers", bytemuck::cast_slice(&scene.rivers), wgpu::BufferUsages::VERTEX);
-        let climate_view = &self.climates.iter().find(|(c, _)| *c == climate).expect("every climate uploaded").1;
+        let climate_view = &self.climates.iter().find(|(c, _)| *c == palette).expect("every palette uploaded").1;
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("frame"),
             layout: &self.layout,

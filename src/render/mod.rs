@@ -128,7 +128,7 @@ pub fn shared() -> Result<&'static Renderer, RenderError> {
 pub fn draw(renderer: &Renderer, mesh: &Mesh, params: &Params, shot: &Shot) -> Result<Vec<u8>, RenderError> {
     let cam = &shot.camera;
     let scene = scene::prepare(mesh, params, cam, shot.sun_direction());
-    renderer.draw(&scene, params.climate, cam.width, cam.height)
+    renderer.draw(&scene, crate::export::climate::Palette::of(params), cam.width, cam.height)
 }
 
 /// Adapts `base` to the shot's camera (at most `max_faces`; on `gpu`'s device where given) and

@@ -269,11 +269,12 @@ fn rivers_narrower_than_a_pixel_stay_visible_as_lines() {
         let mut adapter = crate::adapt::Adapter::new(planet.mesh.clone(), params.clone());
         adapter.adapt(&cam, Some(300_000));
         let mut scene = scene::prepare(adapter.mesh(), params, &cam, scene::default_sun(&cam));
-        let with = renderer().draw(&scene, params.climate, cam.width, cam.height).unwrap();
+        let with = renderer().draw(&scene, crate::export::climate::Palette::of(params), cam.width, cam.height).unwrap();
         let lines = scene.rivers.len() / 2;
         let coverage: Vec<f32> = scene.rivers.iter().map(|v| v.coverage).collect();
         scene.rivers.clear();
-        let without = renderer().draw(&scene, params.climate, cam.width, cam.height).unwrap();
+        let without =
+            renderer().draw(&scene, crate::export::climate::Palette::of(params), cam.width, cam.height).unwrap();
         // Pixels the lines changed visibly, and how much bluer (blue over the mean of red and green)
         // they became on average.
         let blue = |p: &[u8]| f64::from(p[2]) - 0.5 * (f64::from(p[0]) + f64::from(p[1]));

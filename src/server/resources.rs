@@ -226,7 +226,7 @@ fn render(
 /// and 3D Tiles contents quantized and meshopt-compressed by default, their vertex colours
 /// linear as glTF defines them), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "10";
+pub const ANSWERS_REVISION: &str = "11";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

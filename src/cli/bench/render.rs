@@ -59,7 +59,8 @@ pub fn run(spec: &PlanetSpec, runs: usize) {
                 let s = scene::prepare(a.mesh(), p, &shot.camera, scene::default_sun(&shot.camera));
                 let prepare = ms(t1);
                 let t2 = Instant::now();
-                let px = renderer.draw(&s, p.climate, w, h).expect("benchmark render");
+                let px =
+                    renderer.draw(&s, riverworld::export::climate::Palette::of(p), w, h).expect("benchmark render");
                 let draw = ms(t2);
                 let t3 = Instant::now();
                 std::hint::black_box(render::encode(&px, w, h, ImageFormat::Png));
