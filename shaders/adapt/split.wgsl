@@ -204,35 +204,48 @@ fn guide_cell(d: vec3<f64>) -> GuideCell {
     return GuideCell(true, at, gx - ix, gy - iy);
 }
 
-fn guide_at(d: vec3<f64>) -> Guided {
+// `Guide::patch`: the four cells around `d` and the fractions, found when the map has data in
+// all four.
+struct GuidePatch {
+    found: bool,
+    v00: f64,
+    v10: f64,
+    v01: f64,
+    v11: f64,
+    fx: f64,
+    fy: f64,
+}
+
+fn guide_patch(d: vec3<f64>) -> GuidePatch {
     let c = guide_cell(d);
     if !c.found {
-        return Guided(false, 0.0lf);
+        return GuidePatch(false, 0.0lf, 0.0lf, 0.0lf, 0.0lf, 0.0lf, 0.0lf);
     }
     let v00 = f64(guide_values[c.at]);
     let v10 = f64(guide_values[c.at + 1u]);
     let v01 = f64(guide_values[c.at + p.guide_side]);
     let v11 = f64(guide_values[c.at + p.guide_side + 1u]);
-    let a = v00 + (v10 - v00) * c.fx;
-    let b = v01 + (v11 - v01) * c.fx;
     let missing = min(min(v00, v10), min(v01, v11)) < -1.0e29lf;
-    return Guided(!missing, a + (b - a) * c.fy);
+    return GuidePatch(!missing, v00, v10, v01, v11, c.fx, c.fy);
+}
+
+fn guide_at(d: vec3<f64>) -> Guided {
+    let q = guide_patch(d);
+    if !q.found {
+        return Guided(false, 0.0lf);
+    }
+    let a = q.v00 + (q.v10 - q.v00) * q.fx;
+    let b = q.v01 + (q.v11 - q.v01) * q.fx;
+    return Guided(true, a + (b - a) * q.fy);
 }
 
 // `Guide::relief_at`: the twist of the map's bilinear patch under `d` (0 without data).
 fn guide_twist(d: vec3<f64>) -> f64 {
-    let c = guide_cell(d);
-    if !c.found {
+    let q = guide_patch(d);
+    if !q.found {
         return 0.0lf;
     }
-    let v00 = f64(guide_values[c.at]);
-    let v10 = f64(guide_values[c.at + 1u]);
-    let v01 = f64(guide_values[c.at + p.guide_side]);
-    let v11 = f64(guide_values[c.at + p.guide_side + 1u]);
-    if min(min(v00, v10), min(v01, v11)) < -1.0e29lf {
-        return 0.0lf;
-    }
-    return abs((v00 + v11) - (v10 + v01));
+    return abs((q.v00 + q.v11) - (q.v10 + q.v01));
 }
 
 fn edge_centre(s: Site) -> vec3<f64> {

@@ -180,16 +180,22 @@ impl Guide {
         Some((at, fx, fy))
     }
 
-    /// Metres relative to sea level the map asks for in unit direction `d`, if it has data there.
-    pub fn at(&self, d: DVec3) -> Option<f64> {
+    /// The four cells around unit direction `d` (`[v00, v10, v01, v11]`) and the fractions
+    /// towards the last three, if the map has data in all four.
+    fn patch(&self, d: DVec3) -> Option<([f64; 4], f64, f64)> {
         let (at, fx, fy) = self.cell(d)?;
         let s = self.side as usize;
-        let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
+        let v = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
+        (!v.iter().any(|&x| x < -1.0e29)).then_some((v, fx, fy))
+    }
+
+    /// Metres relative to sea level the map asks for in unit direction `d`, if it has data there.
+    pub fn at(&self, d: DVec3) -> Option<f64> {
+        let ([v00, v10, v01, v11], fx, fy) = self.patch(d)?;
         // Written out as `split.wgsl` computes it.
         let a = v00 + (v10 - v00) * fx;
         let b = v01 + (v11 - v01) * fx;
-        let missing = [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29);
-        (!missing).then_some(a + (b - a) * fy)
+        Some(a + (b - a) * fy)
     }
 
     /// The map's roughness within one cell at unit direction `d`: the twist of the bilinear
@@ -197,13 +203,7 @@ impl Guide {
     /// steep, large across crests, saddles and valleys (0 without data). `split.wgsl`'s
     /// `guide_twist` is its twin.
     pub fn relief_at(&self, d: DVec3) -> f64 {
-        let Some((at, _, _)) = self.cell(d) else { return 0.0 };
-        let s = self.side as usize;
-        let [v00, v10, v01, v11] = [at, at + 1, at + s, at + s + 1].map(|i| f64::from(self.values[i]));
-        if [v00, v10, v01, v11].iter().any(|&v| v < -1.0e29) {
-            return 0.0;
-        }
-        ((v00 + v11) - (v10 + v01)).abs()
+        self.patch(d).map_or(0.0, |([v00, v10, v01, v11], _, _)| ((v00 + v11) - (v10 + v01)).abs())
     }
 }
 
