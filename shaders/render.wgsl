@@ -19,12 +19,13 @@ struct Frame {
     // x: lowest altitude of the climate texture, y: its altitude span, z: haze length,
     // w: depth of the darkest water, metres.
     lookup: vec4<f32>,
-    // x: haze length of the sky, metres.
+    // x: haze length of the sky, metres; y: precipitation at the end of the climate texture's
+    // z axis (which runs over its square root), mm/yr.
     sky: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> frame: Frame;
-@group(0) @binding(1) var climate: texture_2d<f32>;
+@group(0) @binding(1) var climate: texture_3d<f32>;
 @group(0) @binding(2) var water_ramp: texture_2d<f32>;
 @group(0) @binding(3) var ramp_sampler: sampler;
 
@@ -35,6 +36,7 @@ struct VertexIn {
     @location(3) water: f32,
     @location(4) up: vec3<f32>,
     @location(5) latitude: f32,
+    @location(6) precip: f32,
 }
 
 struct Surface {
@@ -42,8 +44,8 @@ struct Surface {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) up: vec3<f32>,
-    // x: ground altitude, y: water depth, z: latitude in degrees.
-    @location(3) data: vec3<f32>,
+    // x: ground altitude, y: water depth, z: latitude in degrees, w: precipitation (mm/yr).
+    @location(3) data: vec4<f32>,
 }
 
 const SPACE: vec3<f32> = vec3<f32>(0.0, 0.0, 0.004);
@@ -90,15 +92,16 @@ fn terrain_vertex(v: VertexIn) -> Surface {
     out.position = v.position;
     out.normal = v.normal;
     out.up = v.up;
-    out.data = vec3<f32>(v.ground, v.water - v.ground, v.latitude);
+    out.data = vec4<f32>(v.ground, v.water - v.ground, v.latitude, v.precip);
     return out;
 }
 
 @fragment
 fn terrain_fragment(s: Surface) -> @location(0) vec4<f32> {
     let u = clamp((s.data.x - frame.lookup.x) / frame.lookup.y, 0.0, 1.0);
-    let v = clamp((90.0 - s.data.z) / 180.0, 0.0, 1.0);
-    let albedo = textureSampleLevel(climate, ramp_sampler, vec2<f32>(u, v), 0.0).rgb;
+    let v = clamp((90.0 - abs(s.data.z)) / 90.0, 0.0, 1.0);
+    let w = sqrt(clamp(s.data.w / frame.sky.y, 0.0, 1.0));
+    let albedo = textureSampleLevel(climate, ramp_sampler, vec3<f32>(u, v, w), 0.0).rgb;
     let colour = lit(albedo, normalize(s.normal), normalize(s.up));
     return vec4<f32>(haze(colour, s.position, normalize(s.up)), 1.0);
 }
@@ -115,7 +118,7 @@ fn water_vertex(v: VertexIn) -> Surface {
     out.position = p;
     out.normal = v.up;
     out.up = v.up;
-    out.data = vec3<f32>(v.ground, lift, v.latitude);
+    out.data = vec4<f32>(v.ground, lift, v.latitude, v.precip);
     return out;
 }
 

@@ -1,14 +1,26 @@
-//! The 2D climate lookup of paper §3.3: ground colour from geographic latitude and altitude
-//! (metres relative to sea level), and sea colour from water depth.
+//! The climate lookup of paper §3.3, with the planet's moisture: ground colour from geographic
+//! latitude, altitude (metres relative to sea level) and the climate's mean annual
+//! precipitation, and sea colour from water depth.
 //!
-//! A land colour is made in three steps. First a *belt* colour comes from the absolute latitude,
-//! interpolated linearly between the key latitudes of the climate's row below. Then altitude
-//! tints it slowly towards bare rock (at most 35% by the tree line), blends it fully to rock above
-//! the tree line and to snow above the snow line. The snow line falls with latitude,
-//! `snow(lat) = snow_eq * (1 - (|lat| / ice_lat)^3)`: nearly flat in the tropics, 0 m at
-//! `ice_lat` and below sea level poleward of it, so ice caps are white down to the coast. The
-//! tree line lies at three quarters of the snow line's altitude. Both blends are smooth, over
-//! ±300 m (rock) and ±150 m (snow), so the texture has no hard bands.
+//! A land colour is made in three steps. First a *zone* colour comes from the absolute
+//! latitude, interpolated linearly between the key latitudes of the climate's row below:
+//! vegetation, tundra or ice. The *vegetation* colour follows the climate's moisture, not the
+//! latitude: the aridity index `AI = P / E0` (precipitation over potential evaporation, both
+//! from [`crate::planet::climate`], so that the colours agree with the rivers' runoff) picks
+//! desert below 0.15, steppe from 0.3 to 0.35 and forest above 0.75, blended smoothly in
+//! between; forest
+//! with `AI` above 1.2 turns to tropical forest where the mean temperature passes 20-24 °C.
+//! The model's `E0` (from temperature alone) falls short of a Penman estimate in hot dry air,
+//! so its `AI` runs high: the bounds sit above UNEP's (arid 0.05-0.2, semi-arid 0.2-0.5,
+//! humid above 0.65): the desert's, placed so that 25 arid places of known Köppen class get
+//! their colour where the climate gives them little rain (measured in docs/realism.md).
+//! So the Sahara is desert and the Ganges plain green, both at 25°N. Then altitude tints the
+//! colour slowly towards bare rock (at most 35% by the tree line), blends it fully to rock
+//! above the tree line and to snow above the snow line. The paper preset's snow line falls with
+//! latitude, `snow(lat) = snow_eq * (1 - (|lat| / ice_lat)^3)`: nearly flat in the tropics, 0 m
+//! at `ice_lat` and below sea level poleward of it, so ice caps are white down to the coast.
+//! The tree line lies at three quarters of the snow line's altitude. Both blends are smooth,
+//! over ±300 m (rock) and ±150 m (snow), so the colours have no hard bands.
 //!
 //! For the paper's preset the lines sit higher than Earth's because its planets are higher: with
 //! Table 2's defaults land reaches `a_max_mountain - epsilon_sea` = 10 km above sea level and
@@ -18,19 +30,24 @@
 //! equator, ~5.6 km in the dry subtropics and Tibet, ~2.9 km at the Alps' 46°, ~1.2 km at 62°, sea level
 //! near 76°), scaled for the other climates by their `snow_eq` against the temperate one's.
 //!
-//! | climate   | belts by absolute latitude (key points, °)                           | snow_eq | ice_lat |
-//! |-----------|----------------------------------------------------------------------|---------|---------|
-//! | Temperate | 0-10 tropical forest, 17-30 desert, 38 steppe, 45-58 forest,         | 7500 m  | 72°     |
-//! |           | 64-69 tundra, 72-90 ice cap                                          |         |         |
-//! | Arid      | 0 steppe, 8-42 desert, 52 steppe, 66-78 tundra, 82-90 ice cap        | 8500 m  | 82°     |
-//! | Frozen    | 0-18 forest, 28-48 tundra, 55-90 ice cap                             | 4000 m  | 55°     |
+//! | climate   | zones by absolute latitude (key points, °)            | rain  | snow_eq | ice_lat |
+//! |-----------|-------------------------------------------------------|-------|---------|---------|
+//! | Temperate | 0-58 vegetation, 64-69 tundra, 72-90 ice cap          | x1    | 7500 m  | 72°     |
+//! | Arid      | 0-62 vegetation, 66-78 tundra, 82-90 ice cap          | x0.35 | 8500 m  | 82°     |
+//! | Frozen    | 0-18 vegetation, 28-48 tundra, 55-90 ice cap          | x1    | 4000 m  | 55°     |
+//!
+//! (The arid climate's colours take a third of the model's rain: deserts spread to 45°.) A mesh
+//! without a climate ([`crate::mesh::Mesh::precipitation`] `None`) takes the model's zonal
+//! precipitation (over land and sea: steppe in the subtropics, forest elsewhere).
 //!
 //! Colours (sRGB): tropical forest (30, 95, 40), forest (50, 110, 45), steppe (145, 160, 85),
 //! desert (215, 190, 130), tundra (150, 150, 120), ice (235, 242, 250), rock (125, 110, 100),
 //! snow (250, 250, 252). Sea: `water_colour` runs from (120, 190, 215) at the coast to
 //! (10, 30, 90) at 6000 m depth along a square-root curve (shelves stay light).
 
+use crate::mesh::Mesh;
 use crate::params::{Climate, Params, Preset};
+use crate::planet::climate::{potential_evaporation_mm, temperature_c, zonal_mm};
 
 type Rgb = [f64; 3];
 
@@ -55,52 +72,69 @@ const HIGHLAND_TINT: f64 = 0.35;
 /// Altitude range of `climate_texture`'s x axis.
 pub const TEXTURE_MIN_ALTITUDE_M: f64 = -500.0;
 pub const TEXTURE_MAX_ALTITUDE_M: f64 = 9000.0;
+/// Precipitation at the end of `climate_texture`'s z axis (mm/yr), which runs over
+/// `sqrt(P / TEXTURE_MAX_PRECIP_MM)`: finer where the colours change (deserts to steppe).
+pub const TEXTURE_MAX_PRECIP_MM: f64 = 4000.0;
+
+/// Aridity index (P / E0) spans of the vegetation's blends: desert to steppe, steppe to
+/// forest, forest to tropical forest (where warm); and the mean temperatures (°C) over which
+/// wet forest turns tropical.
+const DESERT_AI: (f64, f64) = (0.15, 0.3);
+const STEPPE_AI: (f64, f64) = (0.35, 0.75);
+const RAINFOREST_AI: (f64, f64) = (0.8, 1.2);
+const RAINFOREST_C: (f64, f64) = (20.0, 24.0);
+
+/// What covers the ground at a latitude, before altitude.
+#[derive(Clone, Copy)]
+enum Zone {
+    /// Desert, steppe or forest by the climate's moisture ([`vegetation`]).
+    Vegetation,
+    Tundra,
+    Ice,
+}
 
 struct Profile {
-    belts: &'static [(f64, Rgb)],
+    zones: &'static [(f64, Zone)],
+    /// Share of the climate model's precipitation the colours take.
+    rain: f64,
     snow_eq: f64,
     ice_lat: f64,
 }
 
 fn profile(climate: Climate) -> Profile {
+    use Zone::{Ice, Tundra, Vegetation};
     match climate {
         Climate::Temperate => Profile {
-            belts: &[
-                (0.0, TROPICAL),
-                (10.0, TROPICAL),
-                (17.0, DESERT),
-                (30.0, DESERT),
-                (38.0, STEPPE),
-                (45.0, FOREST),
-                (58.0, FOREST),
-                (64.0, TUNDRA),
-                (69.0, TUNDRA),
-                (72.0, ICE),
-                (90.0, ICE),
-            ],
+            zones: &[(0.0, Vegetation), (58.0, Vegetation), (64.0, Tundra), (69.0, Tundra), (72.0, Ice), (90.0, Ice)],
+            rain: 1.0,
             snow_eq: 7500.0,
             ice_lat: 72.0,
         },
         Climate::Arid => Profile {
-            belts: &[
-                (0.0, STEPPE),
-                (8.0, DESERT),
-                (42.0, DESERT),
-                (52.0, STEPPE),
-                (66.0, TUNDRA),
-                (78.0, TUNDRA),
-                (82.0, ICE),
-                (90.0, ICE),
-            ],
+            zones: &[(0.0, Vegetation), (62.0, Vegetation), (66.0, Tundra), (78.0, Tundra), (82.0, Ice), (90.0, Ice)],
+            rain: 0.35,
             snow_eq: 8500.0,
             ice_lat: 82.0,
         },
         Climate::Frozen => Profile {
-            belts: &[(0.0, FOREST), (18.0, FOREST), (28.0, TUNDRA), (48.0, TUNDRA), (55.0, ICE), (90.0, ICE)],
+            zones: &[(0.0, Vegetation), (18.0, Vegetation), (28.0, Tundra), (48.0, Tundra), (55.0, Ice), (90.0, Ice)],
+            rain: 1.0,
             snow_eq: 4000.0,
             ice_lat: 55.0,
         },
     }
+}
+
+/// The vegetation's colour where `precip_mm` falls a year at a latitude and altitude: by the
+/// aridity index and, for rain forest, the mean temperature (see the module's doc).
+fn vegetation(lat: f64, altitude_m: f64, precip_mm: f64) -> Rgb {
+    let p = precip_mm.max(0.0);
+    let e0 = potential_evaporation_mm(lat, altitude_m, p);
+    let ai = if e0 > 0.0 { p / e0 } else { f64::INFINITY };
+    let dry = mix(DESERT, STEPPE, smoothstep(DESERT_AI.0, DESERT_AI.1, ai));
+    let green = mix(dry, FOREST, smoothstep(STEPPE_AI.0, STEPPE_AI.1, ai));
+    let warm = smoothstep(RAINFOREST_C.0, RAINFOREST_C.1, temperature_c(lat, altitude_m));
+    mix(green, TROPICAL, smoothstep(RAINFOREST_AI.0, RAINFOREST_AI.1, ai) * warm)
 }
 
 fn mix(a: Rgb, b: Rgb, t: f64) -> Rgb {
@@ -117,15 +151,21 @@ fn to_u8(c: Rgb) -> [u8; 3] {
     c.map(|x| x.round().clamp(0.0, 255.0) as u8)
 }
 
-fn belt(belts: &[(f64, Rgb)], lat: f64) -> Rgb {
+/// The zone colour at an absolute latitude, `veg` standing for the vegetation's.
+fn zone_colour(zones: &[(f64, Zone)], lat: f64, veg: Rgb) -> Rgb {
+    let colour = |z: Zone| match z {
+        Zone::Vegetation => veg,
+        Zone::Tundra => TUNDRA,
+        Zone::Ice => ICE,
+    };
     let lat = lat.abs().min(90.0);
-    for w in belts.windows(2) {
-        let ((l0, c0), (l1, c1)) = (w[0], w[1]);
+    for w in zones.windows(2) {
+        let ((l0, z0), (l1, z1)) = (w[0], w[1]);
         if lat <= l1 {
-            return mix(c0, c1, (lat - l0) / (l1 - l0));
+            return mix(colour(z0), colour(z1), (lat - l0) / (l1 - l0));
         }
     }
-    belts[belts.len() - 1].1
+    colour(zones[zones.len() - 1].1)
 }
 
 /// What the colours depend on besides latitude and altitude: the climate, and the preset whose
@@ -194,17 +234,35 @@ pub fn snow_line_m(palette: Palette, lat_deg: f64) -> f64 {
     }
 }
 
-/// Land colour for a latitude (degrees) and a ground altitude (metres relative to sea level).
-pub fn climate_colour(palette: Palette, lat_deg: f64, altitude_m: f64) -> [u8; 3] {
+/// Land colour for a latitude (degrees), a ground altitude (metres relative to sea level) and
+/// the climate's precipitation there (mm/yr, [`precipitation_mm`]).
+pub fn climate_colour(palette: Palette, lat_deg: f64, altitude_m: f64, precip_mm: f64) -> [u8; 3] {
     let p = profile(palette.climate);
     let lat = if lat_deg.is_finite() { lat_deg } else { 0.0 };
     let alt = if altitude_m.is_finite() { altitude_m } else { 0.0 };
-    let base = belt(p.belts, lat);
+    let rain = if precip_mm.is_finite() { precip_mm * p.rain } else { 0.0 };
+    let base = zone_colour(p.zones, lat, vegetation(lat, alt, rain));
     let snow = snow_line_m(palette, lat);
     let tree = snow * TREE_SHARE;
     let tinted = if tree > 0.0 { mix(base, ROCK, HIGHLAND_TINT * smoothstep(0.0, tree, alt)) } else { base };
     let rocky = mix(tinted, ROCK, smoothstep(tree - 300.0, tree + 300.0, alt));
     to_u8(mix(rocky, SNOW, smoothstep(snow - 150.0, snow + 150.0, alt)))
+}
+
+/// The climate's mean annual precipitation (mm) at a latitude and longitude of `mesh`: its
+/// planet's ([`crate::mesh::Mesh::precipitation`]), else the climate model's zonal mean.
+pub fn precipitation_mm(mesh: &Mesh, lat_deg: f64, lon_deg: f64) -> f64 {
+    match mesh.precipitation.as_deref() {
+        Some(field) => field.at(lat_deg, lon_deg),
+        None => zonal_mm(lat_deg),
+    }
+}
+
+/// Land colour of a point `p` (planet frame) of `mesh` at a ground altitude (metres relative
+/// to sea level), with the mesh's climate.
+pub fn ground_colour(mesh: &Mesh, palette: Palette, p: glam::DVec3, altitude_m: f64) -> [u8; 3] {
+    let (lat, lon) = crate::geo::lat_lon(p);
+    climate_colour(palette, lat, altitude_m, precipitation_mm(mesh, lat, lon))
 }
 
 /// Sea colour for a water depth in metres (light at the coast, dark in the deep sea).
@@ -213,22 +271,28 @@ pub fn water_colour(depth_m: f64) -> [u8; 3] {
     to_u8(mix(SHALLOW, DEEP, (d / DEEPEST_M).min(1.0).sqrt()))
 }
 
-/// The lookup as an RGBA8 texture (row-major, `width * height * 4` bytes): x runs over the
-/// altitude from -500 m to 9000 m, y over the latitude from 90°N (row 0) to 90°S, sampled at
-/// pixel centres. Alpha is 255.
-pub fn climate_texture(palette: Palette, width: u32, height: u32) -> Vec<u8> {
-    let (w, h) = (width as usize, height as usize);
-    let mut out = Vec::with_capacity(w * h * 4);
+/// The lookup as an RGBA8 3D texture (`width * height * depth * 4` bytes, x fastest, then y,
+/// then z): x runs over the altitude from -500 m to 9000 m, y over the absolute latitude from
+/// 90° (row 0) to 0°, z over `sqrt(P / 4000 mm)` from 0 to 1, all sampled at texel centres.
+/// Alpha is 255.
+pub fn climate_texture(palette: Palette, width: u32, height: u32, depth: u32) -> Vec<u8> {
+    use rayon::prelude::*;
+    let (w, h, d) = (width as usize, height as usize, depth as usize);
     let span = TEXTURE_MAX_ALTITUDE_M - TEXTURE_MIN_ALTITUDE_M;
-    for y in 0..h {
-        let lat = 90.0 - (y as f64 + 0.5) * 180.0 / h as f64;
-        for x in 0..w {
-            let alt = TEXTURE_MIN_ALTITUDE_M + (x as f64 + 0.5) * span / w as f64;
-            let [r, g, b] = climate_colour(palette, lat, alt);
-            out.extend_from_slice(&[r, g, b, 255]);
-        }
-    }
-    out
+    (0..d * h)
+        .into_par_iter()
+        .flat_map_iter(|zy| {
+            let (z, y) = (zy / h, zy % h);
+            let lat = 90.0 - (y as f64 + 0.5) * 90.0 / h as f64;
+            let root = (z as f64 + 0.5) / d as f64;
+            let precip = root * root * TEXTURE_MAX_PRECIP_MM;
+            (0..w).flat_map(move |x| {
+                let alt = TEXTURE_MIN_ALTITUDE_M + (x as f64 + 0.5) * span / w as f64;
+                let [r, g, b] = climate_colour(palette, lat, alt, precip);
+                [r, g, b, 255]
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -248,15 +312,38 @@ mod tests {
         a.iter().zip(b).all(|(&x, y)| (x as i32 - y as i32).abs() <= tol)
     }
 
+    /// Land colour at sea level-ish altitudes in the temperate palette.
+    fn temperate(lat: f64, alt: f64, precip: f64) -> [u8; 3] {
+        climate_colour(paper(Climate::Temperate), lat, alt, precip)
+    }
+
     #[test]
-    fn belts_follow_latitude() {
-        let t = paper(Climate::Temperate);
-        assert!(close(climate_colour(t, 0.0, 100.0), TROPICAL, 1));
-        assert!(close(climate_colour(t, 25.0, 100.0), DESERT, 1));
-        assert!(close(climate_colour(t, -25.0, 100.0), DESERT, 1), "symmetric in latitude");
-        assert!(close(climate_colour(t, 50.0, 100.0), FOREST, 1));
-        assert!(close(climate_colour(t, 66.0, 10.0), TUNDRA, 1));
-        assert!(close(climate_colour(t, 85.0, 0.0), SNOW, 20) || close(climate_colour(t, 85.0, 0.0), ICE, 20));
+    fn vegetation_follows_moisture_and_zones_latitude() {
+        // The Sahara and the Ganges plain lie at the same latitude.
+        assert!(close(temperate(25.0, 200.0, 30.0), DESERT, 1));
+        assert!(close(temperate(-25.0, 200.0, 30.0), DESERT, 1), "symmetric in latitude");
+        let ganges = temperate(25.5, 60.0, 1100.0);
+        assert!(ganges[1] > ganges[0] + 30, "{ganges:?}");
+        // Semi-arid: steppe (the Sahel, the Great Plains' west).
+        assert!(close(temperate(14.0, 300.0, 400.0), STEPPE, 25), "{:?}", temperate(14.0, 300.0, 400.0));
+        // Wet and warm: rain forest; wet and cool: forest.
+        assert!(close(temperate(0.0, 100.0, 2400.0), TROPICAL, 1));
+        assert!(close(temperate(50.0, 100.0, 800.0), FOREST, 1));
+        // Cold zones by latitude, whatever the rain.
+        assert!(close(temperate(66.0, 10.0, 300.0), TUNDRA, 1));
+        let pole = temperate(85.0, 0.0, 100.0);
+        assert!(close(pole, SNOW, 20) || close(pole, ICE, 20));
+        // More rain is never browner.
+        let mut last = i32::MIN + 1;
+        for p in (0..4000).step_by(50) {
+            let g = i32::from(temperate(30.0, 100.0, p as f64)[1]) - i32::from(temperate(30.0, 100.0, p as f64)[0]);
+            assert!(g >= last - 1, "{p} mm");
+            last = g;
+        }
+        // Without a climate, the zonal mean: green tropics.
+        let mesh = Mesh::default();
+        assert!(close(temperate(0.0, 100.0, precipitation_mm(&mesh, 0.0, 10.0)), TROPICAL, 1));
+        assert_eq!(temperate(10.0, 10.0, f64::NAN), temperate(10.0, 10.0, 0.0));
     }
 
     #[test]
@@ -268,24 +355,24 @@ mod tests {
                 assert!(s <= last);
                 last = s;
             }
-            assert!(close(climate_colour(paper(c), 0.0, 9000.0), SNOW, 1), "{c:?}");
+            assert!(close(climate_colour(paper(c), 0.0, 9000.0, 1000.0), SNOW, 1), "{c:?}");
         }
         // Rock between tree line and snow line at the equator.
-        assert!(close(climate_colour(paper(Climate::Temperate), 0.0, 6500.0), ROCK, 1));
+        assert!(close(climate_colour(paper(Climate::Temperate), 0.0, 6500.0, 1000.0), ROCK, 1));
     }
 
     #[test]
     fn the_earth_preset_has_earths_snow_line() {
         let t = earth(Climate::Temperate);
         // Alps (46°N): snow at 3,200 m, none at 2,400 m; the paper's line is far higher there.
-        assert!(close(climate_colour(t, 46.0, 3_200.0), SNOW, 30));
-        assert!(!close(climate_colour(t, 46.0, 2_400.0), SNOW, 30));
-        assert!(!close(climate_colour(paper(Climate::Temperate), 46.0, 3_200.0), SNOW, 30));
+        assert!(close(climate_colour(t, 46.0, 3_200.0, 800.0), SNOW, 30));
+        assert!(!close(climate_colour(t, 46.0, 2_400.0, 800.0), SNOW, 30));
+        assert!(!close(climate_colour(paper(Climate::Temperate), 46.0, 3_200.0, 800.0), SNOW, 30));
         // Himalaya (28°N): snow on the 6 km crests, none on a 4.8 km plateau.
-        assert!(close(climate_colour(t, 28.0, 6_000.0), SNOW, 30));
-        assert!(!close(climate_colour(t, 28.0, 4_800.0), SNOW, 30));
+        assert!(close(climate_colour(t, 28.0, 6_000.0, 800.0), SNOW, 30));
+        assert!(!close(climate_colour(t, 28.0, 4_800.0, 800.0), SNOW, 30));
         // Norway (62°N): snow at 1,500 m. Greenland's coast (78°N): ice.
-        assert!(close(climate_colour(t, 62.0, 1_500.0), SNOW, 30));
+        assert!(close(climate_colour(t, 62.0, 1_500.0, 800.0), SNOW, 30));
         assert!(snow_line_m(t, 78.0) < 0.0);
         // Poleward of the subtropics the line only falls; drier climates raise it.
         let mut last = f64::INFINITY;
@@ -300,13 +387,15 @@ mod tests {
 
     #[test]
     fn climates_shift_the_belts() {
-        // Arid has desert where temperate has forest; frozen has ice where temperate has forest.
-        assert!(close(climate_colour(paper(Climate::Arid), 40.0, 100.0), DESERT, 1));
-        assert!(close(climate_colour(paper(Climate::Frozen), 60.0, 100.0), SNOW, 1));
-        assert!(close(climate_colour(paper(Climate::Arid), 0.0, 7200.0), ROCK, 1));
-        assert!(close(climate_colour(paper(Climate::Temperate), 0.0, 8000.0), SNOW, 1));
-        assert!(close(climate_colour(paper(Climate::Temperate), 55.0, 100.0), FOREST, 1));
-        assert!(close(climate_colour(paper(Climate::Temperate), 66.0, 10.0), TUNDRA, 1));
+        // Arid has desert where temperate has steppe; frozen has ice where temperate has forest.
+        let c = |climate, lat, alt, p| climate_colour(paper(climate), lat, alt, p);
+        assert!(close(c(Climate::Arid, 40.0, 100.0, 300.0), DESERT, 1));
+        assert!(!close(c(Climate::Temperate, 40.0, 100.0, 300.0), DESERT, 30));
+        assert!(close(c(Climate::Frozen, 60.0, 100.0, 800.0), SNOW, 1));
+        assert!(close(c(Climate::Arid, 0.0, 7200.0, 800.0), ROCK, 1));
+        assert!(close(c(Climate::Temperate, 0.0, 8000.0, 800.0), SNOW, 1));
+        assert!(close(c(Climate::Temperate, 55.0, 100.0, 800.0), FOREST, 1));
+        assert!(close(c(Climate::Temperate, 66.0, 10.0, 800.0), TUNDRA, 1));
     }
 
     #[test]
@@ -325,20 +414,27 @@ mod tests {
 
     #[test]
     fn texture_axes() {
-        let (w, h) = (64u32, 32u32);
-        let tex = climate_texture(paper(Climate::Temperate), w, h);
-        assert_eq!(tex.len(), (w * h * 4) as usize);
+        let (w, h, d) = (64u32, 16u32, 8u32);
+        let tex = climate_texture(paper(Climate::Temperate), w, h, d);
+        assert_eq!(tex.len(), (w * h * d * 4) as usize);
         assert!(tex.chunks(4).all(|p| p[3] == 255));
-        let at = |x: u32, y: u32| {
-            let i = ((y * w + x) * 4) as usize;
+        let at = |x: u32, y: u32, z: u32| {
+            let i = (((z * h + y) * w + x) * 4) as usize;
             [tex[i], tex[i + 1], tex[i + 2]]
         };
-        // Row 0 is the north pole: ice at any altitude; the last column is above the snow line.
-        assert!(close(at(0, 0), ICE, 20) || close(at(0, 0), SNOW, 20));
-        assert!(close(at(w - 1, h / 2), SNOW, 1));
-        // Low altitude at 25°N (row ~ 9) is desert.
-        let y = ((90.0 - 25.0) / 180.0 * h as f64) as u32;
-        assert!(close(at(3, y), DESERT, 25));
-        assert_eq!(tex, climate_texture(paper(Climate::Temperate), w, h));
+        // Row 0 is the pole: ice at any altitude; the last column is above the snow line.
+        assert!(close(at(0, 0, 3), ICE, 20) || close(at(0, 0, 3), SNOW, 20));
+        assert!(close(at(w - 1, h - 1, 3), SNOW, 1));
+        // Low altitude at 25° (row ~ 11): desert in the first layer, green in the last.
+        let y = ((90.0 - 25.0) / 90.0 * h as f64) as u32;
+        assert!(close(at(3, y, 0), DESERT, 1));
+        assert!(at(3, y, d - 1)[1] > at(3, y, d - 1)[0] + 30);
+        // Texel centres: the layer's precipitation.
+        let root = 2.5 / f64::from(d);
+        let lat = 90.0 - (f64::from(y) + 0.5) * 90.0 / f64::from(h);
+        let alt = TEXTURE_MIN_ALTITUDE_M + 3.5 * (TEXTURE_MAX_ALTITUDE_M - TEXTURE_MIN_ALTITUDE_M) / f64::from(w);
+        let direct = climate_colour(paper(Climate::Temperate), lat, alt, root * root * TEXTURE_MAX_PRECIP_MM);
+        assert_eq!(at(3, y, 2), direct);
+        assert_eq!(tex, climate_texture(paper(Climate::Temperate), w, h, d));
     }
 }

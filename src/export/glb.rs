@@ -10,11 +10,10 @@
 //! all in the default scene), plain or quantized and meshopt-compressed ([`Compression`],
 //! `glb_pack.rs`); [`planet_glb`] uses it for the base mesh.
 
-use super::climate::{climate_colour, water_colour, Palette};
+use super::climate::{ground_colour, water_colour, Palette};
 pub use super::glb_pack::Compression;
 use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, StreamKind};
 use super::surface_normals;
-use crate::geo::lat_lon;
 use crate::mesh::{Mesh, VertexFlags};
 use crate::params::Params;
 use gltf_json as json;
@@ -126,7 +125,7 @@ pub fn terrain_mesh_with_normals(
                 let [r, g, b] = if !v.flags.intersects(land) {
                     water_colour(sea - v.ground)
                 } else {
-                    climate_colour(Palette::of(params), lat_lon(v.p()).0, v.ground - sea)
+                    ground_colour(mesh, Palette::of(params), v.p(), v.ground - sea)
                 };
                 linear_rgba([r, g, b], 255)
             })

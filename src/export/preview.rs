@@ -11,7 +11,7 @@
 //! not across lakes (a segment between two lake vertices).
 //! Segments crossing the antimeridian are drawn the short way, wrapping around the image.
 
-use super::climate::{climate_colour, water_colour, Palette};
+use super::climate::{climate_colour, precipitation_mm, water_colour, Palette};
 use super::raster::{encode_png, SphereRaster};
 use super::surface_normals;
 use crate::geo::lat_lon;
@@ -122,7 +122,8 @@ pub fn preview_png(mesh: &Mesh, graph: &RiverGraph, params: &Params, width: u32,
                 let lon = SphereRaster::lon_of(c as u32, width);
                 let d = raster.direction(c as u32, r as u32);
                 let s = shade(d, normal.normalize_or_zero(), lat, lon);
-                climate_colour(Palette::of(params), lat, alt).map(|x| (x as f64 * s).round().clamp(0.0, 255.0) as u8)
+                climate_colour(Palette::of(params), lat, alt, precipitation_mm(mesh, lat, lon))
+                    .map(|x| (x as f64 * s).round().clamp(0.0, 255.0) as u8)
             };
             row[c * 3..c * 3 + 3].copy_from_slice(&rgb);
         }

@@ -20,6 +20,7 @@ mod diamond;
 pub mod guide;
 mod kinds;
 mod packed;
+pub mod precipitation;
 pub mod prefetch;
 pub mod raster;
 pub mod split;
@@ -114,6 +115,8 @@ pub struct Mesh {
     pub guide: Option<std::sync::Arc<guide::Guide>>,
     /// The base mesh's river widths, for the water surface (planets with a climate).
     pub channels: Option<std::sync::Arc<channels::Channels>>,
+    /// The climate's precipitation, for the colours (planets with a climate).
+    pub precipitation: Option<std::sync::Arc<precipitation::Precipitation>>,
 }
 
 impl Mesh {
@@ -126,6 +129,7 @@ impl Mesh {
         self.faces.clone_from(&other.faces);
         self.guide.clone_from(&other.guide);
         self.channels.clone_from(&other.channels);
+        self.precipitation.clone_from(&other.precipitation);
     }
 
     /// Bytes of the buffers' capacity.
@@ -258,7 +262,15 @@ impl Mesh {
     /// and for surface patches, whose border edges have one face (the other is [`NONE`]).
     pub fn from_triangles(radius: f64, vertices: Vec<Vertex>, tris: &[[u32; 3]]) -> Mesh {
         use std::collections::HashMap;
-        let mut mesh = Mesh { radius, vertices, edges: Vec::new(), faces: Vec::new(), guide: None, channels: None };
+        let mut mesh = Mesh {
+            radius,
+            vertices,
+            edges: Vec::new(),
+            faces: Vec::new(),
+            guide: None,
+            channels: None,
+            precipitation: None,
+        };
         let mut by_pair: HashMap<(u32, u32), u32> = HashMap::new();
         for (fi, t) in tris.iter().enumerate() {
             let mut face = Face { e: [NONE; 3] };

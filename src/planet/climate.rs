@@ -10,7 +10,8 @@
 //!    equator and 30°, the westerlies from the west between 30° and 60°, polar easterlies
 //!    beyond. Along each row of the grid, in the wind's direction, the air's moisture `m` is 1
 //!    over the ocean and decays over land with distance (e-folding [`TROPICAL_DECAY_KM`] in the
-//!    tropics, where rain evaporates and falls again, [`DECAY_KM`] elsewhere) and with uplift:
+//!    tropics, where rain evaporates and falls again, [`DECAY_KM`] in the subtropics and
+//!    mid-latitudes, [`BOREAL_DECAY_KM`] in the boreal zone, blended between) and with uplift:
 //!    air that climbs `dh` keeps `exp(-dh / UPLIFT_M)` of its moisture and rains the rest on the
 //!    windward slope ([`OROGRAPHIC_GAIN`]). Leeward of a range is a rain shadow.
 //! 3. **Poleward flow** between 10° and 50°: along each column from the equator, tropical
@@ -18,8 +19,11 @@
 //!    monsoons and the continents' wet eastern flanks. It takes its moisture from seas east of
 //!    land (warm currents); off west coasts (cold currents) it gets [`COLD_SEA`] of it.
 //! 4. **Distance to the sea** in any direction stands for the other winds: moisture is at
-//!    least `NEAR_SEA * exp(-d / NEAR_SEA_KM)` (0.8 and 2,000 km in the tropics).
-//! 5. `P = P0(lat) * m` plus the orographic rain, or what the poleward flow brings if more.
+//!    least `NEAR_SEA * exp(-d / NEAR_SEA_KM)` (0.8 and 2,000 km in the tropics; 0.3 of it
+//!    under the subtropics' sinking air), times the warmth of that sea outside the inner
+//!    tropics: coasts beside cold currents (Atacama, Namib) stay dry.
+//! 5. `P = P0(lat) * m` plus the orographic rain, or what the poleward flow brings if more;
+//!    then smoothed over land ([`SMOOTH_KM`]) so that rows and columns of the grid do not show.
 //! 6. **Temperature** `T = 28 °C - 30 °C * sin²(lat) - 6.5 °C/km * altitude`; potential
 //!    (open-water) evaporation `E0 = 50 mm * T * (1 + 0.8 exp(-P / 400 mm))` per year for
 //!    `T > 0`: dry air takes up more.
@@ -49,11 +53,11 @@ const ZONAL_MM: [(f64, f64); 12] = [
 ];
 const TROPICAL_DECAY_KM: f64 = 12000.0;
 const DECAY_KM: f64 = 3000.0;
-const BOREAL_DECAY_KM: f64 = 5000.0;
+const BOREAL_DECAY_KM: f64 = 15000.0;
 /// Over open water the air regains moisture over this fetch; the poleward flow over warm
 /// seas, faster.
 const FETCH_KM: f64 = 2000.0;
-const MONSOON_FETCH_KM: f64 = 400.0;
+const MONSOON_FETCH_KM: f64 = 1500.0;
 /// How fast the air sinks back after a crest (m per km).
 const SETTLE_M_PER_KM: f64 = 1.0;
 /// Latitudes of the poleward flow, and the share of its moisture that counts.
@@ -70,9 +74,14 @@ const NEAR_SEA: f64 = 0.5;
 const TROPICAL_NEAR_SEA: f64 = 0.8;
 const TROPICAL_NEAR_SEA_KM: f64 = 2000.0;
 const NEAR_SEA_KM: f64 = 800.0;
+/// The floor's share under the subtropics' sinking air (20-30°; blended over 10-20° and
+/// 25-40°): their other winds bring little rain.
+const SUBTROPICAL_NEAR_SEA: f64 = 0.3;
 /// Evaporation's rise in dry air, and the rain (mm/yr) below which the air counts as dry.
 const DRY_AIR: f64 = 0.5;
 const DRY_MM: f64 = 400.0;
+/// Standard deviation of the smoothing of the land's precipitation (km).
+const SMOOTH_KM: f64 = 200.0;
 /// Fu's Budyko parameter.
 const FU_W: f64 = 2.6;
 const EARTH_RADIUS_KM: f64 = 6371.0;
@@ -134,13 +143,25 @@ pub fn channel_loss_mm(precip_mm: f64, e0_mm: f64) -> f64 {
     (e0_mm - precip_mm) * aridity * aridity
 }
 
-/// Decay length of moisture over land (km): rain falls and evaporates again in the tropics.
+/// Decay length of moisture over land (km) carried by the prevailing winds: long in the inner
+/// tropics, where rain evaporates and falls again, and in the boreal zone, whose forests give
+/// back much of the rain (Siberia's interior gets 400-500 mm); shorter between. Blended
+/// between the zones (10-20° and 40-50°), so that no latitude draws a line across a continent.
 fn decay_km(lat: f64) -> f64 {
-    match lat.abs() {
-        a if a < 15.0 => TROPICAL_DECAY_KM,
-        a if a < 40.0 => DECAY_KM,
-        _ => BOREAL_DECAY_KM,
-    }
+    let a = lat.abs();
+    TROPICAL_DECAY_KM
+        + (DECAY_KM - TROPICAL_DECAY_KM) * smoothstep(10.0, 20.0, a)
+        + (BOREAL_DECAY_KM - DECAY_KM) * smoothstep(40.0, 50.0, a)
+}
+
+/// 0 in the inner tropics, 1 poleward of 20°, smooth between.
+fn extratropical(lat: f64) -> f64 {
+    smoothstep(10.0, 20.0, lat.abs())
+}
+
+fn smoothstep(lo: f64, hi: f64, x: f64) -> f64 {
+    let t = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }
 
 /// Wind direction along a row: +1 towards the east (westerlies), -1 towards the west.
@@ -161,7 +182,7 @@ impl Climate {
         assert_eq!(cells.len(), w * h, "one cell per grid cell");
         let step = 1.0 / CELLS_PER_DEG as f64;
         let lat_of = |r: usize| 90.0 - (r as f64 + 0.5) * step;
-        let near = sea_distance_km(cells, w, h, step);
+        let (near, nearest) = sea_distance_km(cells, w, h, step);
         // Moisture along the rows (prevailing winds), then along the columns from the
         // equator (the poleward flow on the continents' eastern flanks).
         // Moisture of the sea: full for the prevailing winds; for the poleward flow only on a
@@ -188,7 +209,8 @@ impl Climate {
             if wind(lat) < 0 {
                 path.reverse();
             }
-            advect(cells, &full, &path, true, 1.0, dx, (decay_km(lat), FETCH_KM), &mut zonal);
+            let decay = decay_km(lat);
+            advect(cells, &full, &path, true, 1.0, dx, (&|_| decay, FETCH_KM), &mut zonal);
         }
         let mut meridional = vec![(0.0f64, 0.0f64); w * h];
         let dy = step.to_radians() * EARTH_RADIUS_KM;
@@ -203,7 +225,7 @@ impl Climate {
                 }
                 if let Some(&first) = path.first() {
                     let m0 = if cells[first].0 { zonal[first].0 } else { 1.0 };
-                    advect(cells, &warm, &path, false, m0, dy, (DECAY_KM, MONSOON_FETCH_KM), &mut meridional);
+                    advect(cells, &warm, &path, false, m0, dy, (&|_| DECAY_KM, MONSOON_FETCH_KM), &mut meridional);
                 }
             }
         }
@@ -211,11 +233,16 @@ impl Climate {
         for (i, cell) in cells.iter().enumerate() {
             let p0 = zonal_mm(lat_of(i / w));
             precip[i] = if cell.0 {
-                let floor = if lat_of(i / w).abs() < 15.0 {
-                    TROPICAL_NEAR_SEA * (-near[i] / TROPICAL_NEAR_SEA_KM).exp()
-                } else {
-                    NEAR_SEA * (-near[i] / NEAR_SEA_KM).exp()
-                };
+                let lat = lat_of(i / w);
+                // Coasts beside cold currents stay dry, outside the inner tropics.
+                let warmth = 1.0 + (warm[nearest[i]] - 1.0) * smoothstep(4.0, 12.0, lat.abs());
+                let tropical_floor = TROPICAL_NEAR_SEA * (-near[i] / TROPICAL_NEAR_SEA_KM).exp();
+                let mid_floor = NEAR_SEA * (-near[i] / NEAR_SEA_KM).exp();
+                let sub_floor = SUBTROPICAL_NEAR_SEA * mid_floor;
+                let floor = warmth
+                    * (tropical_floor
+                        + (sub_floor - tropical_floor) * extratropical(lat)
+                        + (mid_floor - sub_floor) * smoothstep(25.0, 40.0, lat.abs()));
                 let own = p0 * (zonal[i].0.max(floor) + OROGRAPHIC_GAIN * zonal[i].1);
                 let tropical = POLEWARD_MM * POLEWARD * (meridional[i].0 + OROGRAPHIC_GAIN * meridional[i].1);
                 own.max(tropical) as f32
@@ -223,6 +250,7 @@ impl Climate {
                 p0 as f32
             };
         }
+        smooth_over_land(&mut precip, cells, w, h, step);
         Climate { width: w, height: h, precip_mm: precip }
     }
 
@@ -274,11 +302,10 @@ fn advect(
     ring: bool,
     m0: f64,
     step_km: f64,
-    (decay_km, fetch_km): (f64, f64),
+    (decay_km, fetch_km): (&dyn Fn(usize) -> f64, f64),
     out: &mut [(f64, f64)],
 ) {
     let n = path.len();
-    let decay = (-step_km / decay_km).exp();
     let recharge = 1.0 - (-step_km / fetch_km).exp();
     let ocean = path.iter().position(|&i| !cells[i].0);
     let (start, laps, mut m) = match (ring, ocean) {
@@ -298,7 +325,7 @@ fn advect(
         let alt = alt.max(0.0);
         // The air rides over the terrain, settling back slowly after a crest: only ground that
         // rises above it lifts it (small bumps of a plateau count once).
-        let carried = m * decay;
+        let carried = m * (-step_km / decay_km(i)).exp();
         let rise = (alt - air).max(0.0);
         m = carried * (-rise / UPLIFT_M).exp();
         air = alt.max(air - SETTLE_M_PER_KM * step_km);
@@ -308,8 +335,60 @@ fn advect(
     }
 }
 
-/// Great-circle distance (km) from every cell to the nearest sea cell, along 8-connected steps.
-fn sea_distance_km(cells: &[(bool, f64)], w: usize, h: usize, step: f64) -> Vec<f64> {
+/// Smooths the land's precipitation with a Gaussian of [`SMOOTH_KM`] (separable: along rows,
+/// then columns, weights from land cells only, so coasts keep their land's value and seas
+/// theirs): the winds' rows and columns become weather, not stripes one grid cell wide.
+fn smooth_over_land(field: &mut [f32], cells: &[(bool, f64)], w: usize, h: usize, step: f64) {
+    let kernel = |sigma: f64| -> Vec<f64> {
+        let reach = (3.0 * sigma).ceil() as i64;
+        (-reach..=reach).map(|k| (-0.5 * (k as f64 / sigma).powi(2)).exp()).collect()
+    };
+    let pass = |src: &[f32], along_rows: bool| -> Vec<f32> {
+        let mut out = src.to_vec();
+        for r in 0..h {
+            let lat = 90.0 - (r as f64 + 0.5) * step;
+            let cell_km = if along_rows {
+                step.to_radians() * EARTH_RADIUS_KM * lat.to_radians().cos().max(0.01)
+            } else {
+                step.to_radians() * EARTH_RADIUS_KM
+            };
+            let weights = kernel((SMOOTH_KM / cell_km).min(w as f64 / 8.0));
+            let reach = (weights.len() / 2) as i64;
+            for c in 0..w {
+                let i = r * w + c;
+                if !cells[i].0 {
+                    continue;
+                }
+                let (mut sum, mut total) = (0.0f64, 0.0f64);
+                for (k, wt) in weights.iter().enumerate() {
+                    let d = k as i64 - reach;
+                    let j = if along_rows {
+                        r * w + (c as i64 + d).rem_euclid(w as i64) as usize
+                    } else {
+                        let rr = r as i64 + d;
+                        if rr < 0 || rr >= h as i64 {
+                            continue;
+                        }
+                        rr as usize * w + c
+                    };
+                    if cells[j].0 {
+                        sum += wt * f64::from(src[j]);
+                        total += wt;
+                    }
+                }
+                out[i] = (sum / total) as f32;
+            }
+        }
+        out
+    };
+    let rows = pass(field, true);
+    let both = pass(&rows, false);
+    field.copy_from_slice(&both);
+}
+
+/// Great-circle distance (km) from every cell to the nearest sea cell, along 8-connected steps,
+/// and that sea cell.
+fn sea_distance_km(cells: &[(bool, f64)], w: usize, h: usize, step: f64) -> (Vec<f64>, Vec<usize>) {
     #[derive(PartialEq)]
     struct Item(f64, usize);
     impl Eq for Item {}
@@ -325,6 +404,7 @@ fn sea_distance_km(cells: &[(bool, f64)], w: usize, h: usize, step: f64) -> Vec<
     }
     let centre = |i: usize| direction(90.0 - ((i / w) as f64 + 0.5) * step, -180.0 + ((i % w) as f64 + 0.5) * step);
     let mut dist = vec![f64::INFINITY; w * h];
+    let mut from: Vec<usize> = (0..w * h).collect();
     let mut heap = BinaryHeap::new();
     for (i, c) in cells.iter().enumerate() {
         if !c.0 {
@@ -346,11 +426,12 @@ fn sea_distance_km(cells: &[(bool, f64)], w: usize, h: usize, step: f64) -> Vec<
             let nd = d + centre(i).angle_between(centre(j)) * EARTH_RADIUS_KM;
             if nd < dist[j] {
                 dist[j] = nd;
+                from[j] = from[i];
                 heap.push(Item(nd, j));
             }
         }
     }
-    dist
+    (dist, from)
 }
 
 #[cfg(test)]

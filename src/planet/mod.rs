@@ -214,7 +214,8 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
     // Splits below the base mesh follow an elevation map where it resolves them.
     mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
-    let water = water_budget(&mesh, p.sea_level_m);
+    let (water, precipitation) = water_budget(&mesh, p.sea_level_m);
+    mesh.precipitation = precipitation.map(std::sync::Arc::new);
     // Channel widths for the water surface, from the discharge of the climate's runoff.
     mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &water)).map(std::sync::Arc::new);
     let map_fidelity = spec.map.as_deref().and_then(|m| fidelity::map_fidelity(&mesh, m, p.sea_level_m));
@@ -242,8 +243,8 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
 }
 
 /// Runoff (mm/yr) of each land vertex and what a river's floodplain loses there, in the
-/// climate of the built mesh.
-fn water_budget(mesh: &Mesh, sea: f64) -> network::WaterBudget {
+/// climate of the built mesh, and the climate's precipitation for the colours.
+fn water_budget(mesh: &Mesh, sea: f64) -> (network::WaterBudget, Option<crate::mesh::precipitation::Precipitation>) {
     let land = |v: usize| mesh.vertices[v].flags.is_inland() || mesh.vertices[v].flags.contains(VertexFlags::COAST);
     let altitude = |v: usize| mesh.vertices[v].ground - sea;
     let c = climate::Climate::of_mesh(mesh, land, altitude);
@@ -254,7 +255,8 @@ fn water_budget(mesh: &Mesh, sea: f64) -> network::WaterBudget {
         .map(|(v, &(p, e0))| if land(v) { climate::runoff_mm(p, e0) as f32 } else { 0.0 })
         .collect();
     let channel_loss_mm = at.iter().map(|&(p, e0)| climate::channel_loss_mm(p, e0) as f32).collect();
-    network::WaterBudget { runoff_mm, channel_loss_mm }
+    let precipitation = crate::mesh::precipitation::Precipitation::new(c.width, c.height, c.precip_mm);
+    (network::WaterBudget { runoff_mm, channel_loss_mm }, precipitation)
 }
 
 /// Whether face `f` may overlap the map bounds (its vertices' bounding box, widened by the
@@ -281,5 +283,7 @@ fn face_touches(mesh: &Mesh, f: u32, bounds: &crate::maps::GeoBounds) -> bool {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_climate;
 #[cfg(test)]
 mod tests_relief;

@@ -179,8 +179,8 @@ fn closed_basins(planet: &Planet) -> (Vec<&'static str>, Vec<&'static str>) {
 fn dry_basins_close_and_wet_ones_overflow() {
     let Some(planet) = earth() else { return };
     let (closed, open) = closed_basins(planet);
-    // Measured: 7 of 9 closed (not the Great Salt Lake, Balkhash), 7 of 12 open (not Superior,
-    // Ontario, Baikal, Sichuan, Assam): see docs/realism.md.
+    // Measured: 7 of 9 closed (not the Great Salt Lake, Balkhash), 9 of 12 open (not Superior,
+    // Sichuan, Assam): see docs/realism.md.
     assert!(closed.len() >= 7 && closed.contains(&"Caspian") && closed.contains(&"Aral"), "closed: {closed:?}");
     let wet = ["Congo", "Amazon", "Ob", "Mississippi"];
     assert!(open.len() >= 7 && wet.iter().all(|b| open.contains(b)), "open: {open:?}");
@@ -194,68 +194,6 @@ fn dry_basins_close_and_wet_ones_overflow() {
     assert!(distance_km(lat_lon(planet.mesh.pos(v)), (41.0, 51.0)) < 800.0);
     assert!(caspian.endorheic && (caspian.water_altitude_m + 28.0).abs() <= 15.0, "{caspian:?}");
     assert!((371e9 / 1.5..371e9 * 1.5).contains(&caspian.area_m2), "{caspian:?}");
-}
-
-/// Mean annual precipitation (mm) at stations of every climate, from their climate normals.
-const STATIONS: [(&str, f64, f64, f64); 37] = [
-    ("Manaus", -3.1, -60.0, 2300.0),
-    ("Kinshasa", -4.3, 15.3, 1400.0),
-    ("Mbandaka", 0.05, 18.26, 1700.0),
-    ("Cairo", 30.0, 31.2, 25.0),
-    ("Khartoum", 15.6, 32.5, 120.0),
-    ("Timbuktu", 16.8, -3.0, 200.0),
-    ("N'Djamena", 12.1, 15.0, 550.0),
-    ("Riyadh", 24.7, 46.7, 100.0),
-    ("Chicago", 41.9, -87.6, 950.0),
-    ("Thunder Bay", 48.4, -89.2, 710.0),
-    ("Toronto", 43.7, -79.4, 830.0),
-    ("Montreal", 45.5, -73.6, 1000.0),
-    ("Las Vegas", 36.2, -115.1, 110.0),
-    ("Salt Lake City", 40.8, -111.9, 400.0),
-    ("Seattle", 47.6, -122.3, 950.0),
-    ("Denver", 39.7, -105.0, 400.0),
-    ("Atlanta", 33.7, -84.4, 1250.0),
-    ("London", 51.5, 0.0, 600.0),
-    ("Moscow", 55.7, 37.6, 700.0),
-    ("Astrakhan", 46.3, 48.0, 230.0),
-    ("Aralsk", 45.0, 60.0, 130.0),
-    ("Tashkent", 41.3, 69.3, 440.0),
-    ("Lop Nur", 40.2, 90.3, 20.0),
-    ("Ulaanbaatar", 47.9, 106.9, 250.0),
-    ("Chengdu", 30.7, 104.1, 900.0),
-    ("Chongqing", 29.6, 106.5, 1100.0),
-    ("Beijing", 40.0, 116.4, 570.0),
-    ("Delhi", 28.6, 77.2, 800.0),
-    ("Guwahati", 26.1, 91.7, 1700.0),
-    ("Manila", 14.6, 121.0, 2000.0),
-    ("Yakutsk", 62.0, 129.7, 240.0),
-    ("Alice Springs", -23.7, 133.9, 280.0),
-    ("Sydney", -33.9, 151.2, 1200.0),
-    ("Buenos Aires", -34.6, -58.4, 1200.0),
-    ("Kampala", 0.3, 32.6, 1300.0),
-    ("Kigoma", -4.9, 29.6, 950.0),
-    ("Tehran", 35.7, 51.4, 230.0),
-];
-
-#[test]
-fn precipitation_is_within_a_factor_of_two_at_most_stations() {
-    use crate::planet::climate::{Climate, HEIGHT, WIDTH};
-    let Ok(bytes) = std::fs::read("maps/earth_etopo5_1024x512.tif") else { return };
-    let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
-    let cells: Vec<(bool, f64)> = (0..WIDTH * HEIGHT)
-        .map(|i| {
-            let (lat, lon) = (89.5 - (i / WIDTH) as f64, -179.5 + (i % WIDTH) as f64);
-            let h = f64::from(map.sample(lat, lon).unwrap_or(0.0));
-            (h > 0.0, h.max(0.0))
-        })
-        .collect();
-    let c = Climate::new(&cells);
-    let ratios: Vec<(&str, f64)> = STATIONS.iter().map(|s| (s.0, c.precip_at(s.1, s.2) / s.3)).collect();
-    let within = ratios.iter().filter(|r| (0.5..=2.0).contains(&r.1)).count();
-    // Measured 23 of 37 (docs/realism.md); deserts come out too wet and monsoon Asia too dry.
-    assert!(within >= 20, "{ratios:?}");
-    // Wet tropics far above deserts.
-    assert!(c.precip_at(0.05, 18.26) > 3.0 * c.precip_at(16.8, -3.0));
 }
 
 #[test]
@@ -504,9 +442,10 @@ fn great_rivers_carry_their_discharge_within_a_factor_of_three() {
     let Some(planet) = earth() else { return };
     let table = mouth_discharges(planet);
     let within = table.iter().filter(|t| (1.0 / 3.0..=3.0).contains(&t.2)).count();
-    // Measured 7 of 12 (docs/realism.md): the Congo, Mackenzie, Columbia, Indus, Niger, Zambezi
-    // and St. Lawrence; wet basins get too little rain (Ganges, Ob, Mekong), and the climate's
-    // deserts too much (Nile x7.0, Murray x3.6, after their channels' losses on the way).
+    // Measured 8 of 12 (docs/realism.md): the Congo, Ob, Mackenzie, Columbia, Indus, Niger,
+    // Zambezi and St. Lawrence (x0.34); wet basins get too little rain (Ganges x0.33, Mekong),
+    // and the climate's deserts too much (Nile x6.5, Murray x3.8, after their channels' losses
+    // on the way).
     assert!(within >= 7, "{within} within 3x: {table:?}");
     let q = |n: &str| table.iter().find(|t| t.0 == n).unwrap().1;
     // Tropical rivers far above desert ones; the Sahara's and Amazonia's small rivers.

@@ -11,7 +11,7 @@ use wgpu::util::DeviceExt;
 /// The shader of every pass.
 pub const SHADER: &str = include_str!("../../shaders/render.wgsl");
 /// Size of the climate lookup texture (altitude x latitude).
-const CLIMATE_SIZE: (u32, u32) = (512, 256);
+const CLIMATE_SIZE: (u32, u32, u32) = (256, 64, 32);
 /// Texels of the water colour ramp (square root of depth / darkest depth).
 const RAMP_SIZE: u32 = 256;
 const COLOUR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -58,12 +58,12 @@ impl Renderer {
             label: Some("render.wgsl"),
             source: wgpu::ShaderSource::Wgsl(SHADER.into()),
         });
-        let texture_entry = |binding| wgpu::BindGroupLayoutEntry {
+        let texture_entry = |binding, view_dimension| wgpu::BindGroupLayoutEntry {
             binding,
             visibility: wgpu::ShaderStages::FRAGMENT,
             ty: wgpu::BindingType::Texture {
                 sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension: wgpu::TextureViewDimension::D2,
+                view_dimension,
                 multisampled: false,
             },
             count: None,
@@ -81,8 +81,8 @@ impl Renderer {
                     },
                     count: None,
                 },
-                texture_entry(1),
-                texture_entry(2),
+                texture_entry(1, wgpu::TextureViewDimension::D3),
+                texture_entry(2, wgpu::TextureViewDimension::D2),
                 wgpu::BindGroupLayoutEntry {
                     binding: 3,
                     visibility: wgpu::ShaderStages::FRAGMENT,
@@ -100,7 +100,8 @@ impl Renderer {
             array_stride: std::mem::size_of::<RenderVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &wgpu::vertex_attr_array![
-                0 => Float32x3, 1 => Float32, 2 => Float32x3, 3 => Float32, 4 => Float32x3, 5 => Float32
+                0 => Float32x3, 1 => Float32, 2 => Float32x3, 3 => Float32, 4 => Float32x3, 5 => Float32,
+                6 => Float32
             ],
         };
         let pipeline = |label: &str, vs: &str, fs: &str, blend: Option<wgpu::BlendState>, depth: bool| {
@@ -200,12 +201,12 @@ impl Renderer {
                 [r, g, b, 255]
             })
             .collect();
-        let ramp = upload(&device, &queue, "water ramp", RAMP_SIZE, 1, &ramp);
+        let ramp = upload(&device, &queue, "water ramp", (RAMP_SIZE, 1, 1), &ramp);
         let climates = Palette::ALL
             .into_iter()
             .map(|c| {
-                let (w, h) = CLIMATE_SIZE;
-                (c, upload(&device, &queue, "climate", w, h, &climate_texture(c, w, h)))
+                let (w, h, d) = CLIMATE_SIZE;
+                (c, upload(&device, &queue, "climate", CLIMATE_SIZE, &climate_texture(c, w, h, d)))
             })
             .collect();
         Renderer {
@@ -389,16 +390,24 @@ impl Renderer {
     }
 }
 
-fn upload(device: &wgpu::Device, queue: &wgpu::Queue, label: &str, w: u32, h: u32, rgba: &[u8]) -> wgpu::TextureView {
+/// An sRGB RGBA8 lookup texture of `(width, height, depth)` texels: 2D where the depth is 1.
+fn upload(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    size: (u32, u32, u32),
+    rgba: &[u8],
+) -> wgpu::TextureView {
+    let (w, h, d) = size;
     device
         .create_texture_with_data(
             queue,
             &wgpu::TextureDescriptor {
                 label: Some(label),
-                size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+                size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: d },
                 mip_level_count: 1,
                 sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
+                dimension: if d > 1 { wgpu::TextureDimension::D3 } else { wgpu::TextureDimension::D2 },
                 format: wgpu::TextureFormat::Rgba8UnormSrgb,
                 usage: wgpu::TextureUsages::TEXTURE_BINDING,
                 view_formats: &[],

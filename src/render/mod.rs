@@ -1,6 +1,6 @@
 //! Snapshot rendering (paper §3.3) with wgpu: the planet adapted to a camera (§5), drawn
-//! offscreen with a 2D climate lookup texture (latitude x altitude, see
-//! [`crate::export::climate`]), a water surface coloured by depth with a specular sun, diffuse sun
+//! offscreen with a 3D climate lookup texture (altitude x latitude x the climate's
+//! precipitation, see [`crate::export::climate`]), a water surface coloured by depth with a specular sun, diffuse sun
 //! light, atmospheric haze and a sky or star background, then encoded as PNG or JPEG.
 //!
 //! One [`Renderer`] (device, pipelines, lookup textures) serves the whole process; see

@@ -27,7 +27,9 @@ pub const HAZE_M: f64 = 700_000.0;
 pub const SKY_M: f64 = 40_000.0;
 
 /// One vertex: eye-relative ground position, altitudes relative to sea level, the area-weighted
-/// surface normal, the local up (the water surface's normal) and the latitude.
+/// surface normal, the local up (the water surface's normal), the latitude and the climate's
+/// precipitation (mm/yr, [`crate::export::climate::precipitation_mm`]): the climate lookup's
+/// coordinates with the altitude.
 ///
 /// `water_m` is the level of the water body the vertex borders: its own water altitude where it
 /// is submerged, else the highest water altitude of the submerged vertices it shares a face
@@ -43,6 +45,7 @@ pub struct RenderVertex {
     pub water_m: f32,
     pub up: [f32; 3],
     pub latitude_deg: f32,
+    pub precip_mm: f32,
 }
 
 /// One end of a river line (`LineIn` in the shader): the water surface's eye-relative position,
@@ -148,13 +151,15 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
         .map(|((v, n), level)| {
             let p = v.p();
             let up = p.normalize_or(DVec3::Z);
+            let (lat, lon) = lat_lon(p);
             RenderVertex {
                 position: (p - eye).as_vec3().to_array(),
                 ground_m: (v.ground - sea) as f32,
                 normal: n.as_vec3().to_array(),
                 water_m: (level - sea) as f32,
                 up: up.as_vec3().to_array(),
-                latitude_deg: lat_lon(p).0 as f32,
+                latitude_deg: lat as f32,
+                precip_mm: crate::export::climate::precipitation_mm(mesh, lat, lon) as f32,
             }
         })
         .collect();
@@ -183,7 +188,7 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             // The depth at which the water ramp texture (built from `water_colour`) ends.
             crate::export::climate::DEEPEST_M as f32,
         ],
-        sky: [SKY_M as f32, 0.0, 0.0, 0.0],
+        sky: [SKY_M as f32, crate::export::climate::TEXTURE_MAX_PRECIP_MM as f32, 0.0, 0.0],
     };
     Scene { vertices, terrain, water, rivers: river_lines(mesh, cam), frame }
 }
@@ -235,8 +240,11 @@ mod tests {
             let back = DVec3::from_array(rv.position.map(|x| x as f64)) + eye;
             assert!(back.distance(v.p()) < 4.0, "f32 offset error at 3 radii stays metres");
             assert!((rv.ground_m as f64 - (v.ground - p.sea_level_m)).abs() < 1e-3);
+            let (lat, lon) = lat_lon(v.p());
+            assert_eq!(rv.precip_mm, crate::export::climate::precipitation_mm(&planet.mesh, lat, lon) as f32);
         }
-        assert_eq!(std::mem::size_of::<RenderVertex>(), 48);
+        assert!(planet.mesh.precipitation.is_some(), "a built planet carries its climate");
+        assert_eq!(std::mem::size_of::<RenderVertex>(), 52);
         assert_eq!(std::mem::size_of::<FrameUniforms>(), 176);
     }
 }

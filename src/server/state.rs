@@ -316,7 +316,8 @@ fn run_build(state: &Arc<AppState>, entry: &Arc<Entry>) {
         Ok(planet) => {
             let planet = Arc::new(planet);
             let guide = planet.mesh.guide.as_ref().map_or(0, |g| 4 * g.values.len())
-                + planet.mesh.channels.as_ref().map_or(0, |c| c.bytes());
+                + planet.mesh.channels.as_ref().map_or(0, |c| c.bytes())
+                + planet.mesh.precipitation.as_ref().map_or(0, |p| p.bytes());
             let bytes = (planet.mesh.bytes_per_vertex() * planet.mesh.vertices.len() as f64) as usize + guide;
             tracing::info!(id = %entry.id, ms = planet.stats.build_ms, faces = planet.stats.faces, "build finished");
             let stats = Stats { build_ms: None, ..planet.stats.clone() };

@@ -220,6 +220,7 @@ impl DeviceMesh {
                 faces: checked_vec::<Face>(&f?, "face")?,
                 guide: None,
                 channels: None,
+                precipitation: None,
             });
         }
         let staging = scoped(gpu, || {
@@ -243,6 +244,7 @@ impl DeviceMesh {
                 faces: checked_vec::<Face>(face_bytes, "face")?,
                 guide: None,
                 channels: None,
+                precipitation: None,
             })
         })?
     }

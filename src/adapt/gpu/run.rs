@@ -241,12 +241,17 @@ fn upload(gpu: &GpuAdaption, mesh: &crate::mesh::Mesh) -> Result<DeviceMesh, Gpu
     Ok(dm)
 }
 
-/// The device copy read back as a mesh adapted from `base` (whose map guide and channels it
-/// shares).
+/// The device copy read back as a mesh adapted from `base` (whose map guide, channels and
+/// precipitation it shares).
 fn download(gpu: &GpuAdaption, dm: &DeviceMesh, base: &Mesh) -> Result<Mesh, GpuError> {
     let mesh = dm.download(gpu, base.radius)?;
     gpu.record(super::DeviceTimes { download_bytes: mesh_bytes(dm.lens), ..Default::default() });
-    Ok(Mesh { guide: base.guide.clone(), channels: base.channels.clone(), ..mesh })
+    Ok(Mesh {
+        guide: base.guide.clone(),
+        channels: base.channels.clone(),
+        precipitation: base.precipitation.clone(),
+        ..mesh
+    })
 }
 
 fn mesh_bytes((nv, ne, nf): (usize, usize, usize)) -> u64 {

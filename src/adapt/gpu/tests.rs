@@ -324,7 +324,7 @@ fn large_meshes_read_back_or_are_refused() {
     let whole = dm.download(&g, mesh.radius).unwrap();
     let staged = dm.download_staged(&g, mesh.radius, 1024).unwrap();
     // The device holds the buffers; what the planet attaches to its mesh stays on the host.
-    let buffers = Mesh { guide: None, channels: None, ..mesh.clone() };
+    let buffers = Mesh { guide: None, channels: None, precipitation: None, ..mesh.clone() };
     assert!(whole == buffers && staged == buffers);
     let limit = g.device.limits().max_storage_buffer_binding_size;
     let too_many = (limit / crate::mesh::EDGE_BYTES as u64) as usize;

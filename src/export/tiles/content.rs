@@ -127,7 +127,11 @@ fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
             })
         })
         .collect();
-    let surface = Mesh { channels: mesh.channels.clone(), ..Mesh::from_triangles(mesh.radius, vertices, &triangles) };
+    let surface = Mesh {
+        channels: mesh.channels.clone(),
+        precipitation: mesh.precipitation.clone(),
+        ..Mesh::from_triangles(mesh.radius, vertices, &triangles)
+    };
     (surface, ids)
 }
 
