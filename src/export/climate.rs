@@ -265,6 +265,20 @@ pub fn ground_colour(mesh: &Mesh, palette: Palette, p: glam::DVec3, altitude_m: 
     climate_colour(palette, lat, altitude_m, precipitation_mm(mesh, lat, lon))
 }
 
+/// The colour a view or tile gives vertex `v` of `mesh` (sRGB): water by depth off land, the
+/// climate's ground colour on land (river vertices included).
+pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
+    use crate::mesh::VertexFlags;
+    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
+    let vert = &mesh.vertices[v];
+    let sea = params.sea_level_m;
+    if vert.flags.intersects(land) {
+        ground_colour(mesh, Palette::of(params), vert.p(), vert.ground - sea)
+    } else {
+        water_colour(sea - vert.ground)
+    }
+}
+
 /// Sea colour for a water depth in metres (light at the coast, dark in the deep sea).
 pub fn water_colour(depth_m: f64) -> [u8; 3] {
     let d = if depth_m.is_finite() { depth_m.max(0.0) } else { 0.0 };

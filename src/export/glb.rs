@@ -10,7 +10,7 @@
 //! all in the default scene), plain or quantized and meshopt-compressed ([`Compression`],
 //! `glb_pack.rs`); [`planet_glb`] uses it for the base mesh.
 
-use super::climate::{ground_colour, water_colour, Palette};
+use super::climate::vertex_colour;
 pub use super::glb_pack::Compression;
 use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, StreamKind};
 use super::surface_normals;
@@ -100,8 +100,6 @@ pub fn terrain_mesh_with_normals(
     use rayon::prelude::*;
     assert_eq!(normals.len(), mesh.vertices.len(), "one normal per vertex");
     let o = origin.unwrap_or(glam::DVec3::ZERO);
-    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
-    let sea = params.sea_level_m;
     let vertices = &mesh.vertices;
     GlbMesh {
         positions: vertices.par_iter().map(|v| to_gltf_axes((v.p() - o).to_array()).map(|x| x as f32)).collect(),
@@ -117,18 +115,11 @@ pub fn terrain_mesh_with_normals(
                 }
             })
             .collect(),
-        colors: vertices
-            .par_iter()
-            .map(|v| {
-                // A river vertex is coloured as its land: its water, as wide as its channel, is
-                // the water surface's (a coarse face beside a river is not a river).
-                let [r, g, b] = if !v.flags.intersects(land) {
-                    water_colour(sea - v.ground)
-                } else {
-                    ground_colour(mesh, Palette::of(params), v.p(), v.ground - sea)
-                };
-                linear_rgba([r, g, b], 255)
-            })
+        colors: (0..vertices.len())
+            .into_par_iter()
+            // A river vertex is coloured as its land: its water, as wide as its channel, is the
+            // water surface's (a coarse face beside a river is not a river).
+            .map(|v| linear_rgba(vertex_colour(mesh, params, v), 255))
             .collect(),
         indices: triangles.par_iter().flat_map_iter(|t| *t).collect(),
         translation: origin.map(|o| to_gltf_axes(o.to_array())),

@@ -248,13 +248,23 @@ fn vertex_colours_are_linear() {
         .position(|v| v.flags.contains(VertexFlags::CONTINENT) && !v.flags.contains(VertexFlags::RIVER))
         .unwrap();
     let v = &planet.mesh.vertices[land];
-    let srgb = ground_colour(&planet.mesh, Palette::of(&params), v.p(), v.ground - params.sea_level_m);
+    let srgb = crate::export::climate::ground_colour(
+        &planet.mesh,
+        crate::export::climate::Palette::of(&params),
+        v.p(),
+        v.ground - params.sea_level_m,
+    );
     assert_eq!(mesh.colors[land], linear_rgba(srgb, 255));
     // River vertices: blue in the planet model, their land's colour in a view or tile (their
     // water is the water surface's).
     let river = planet.mesh.vertices.iter().position(|v| v.flags.contains(VertexFlags::RIVER)).unwrap();
     let v = &planet.mesh.vertices[river];
     assert_eq!(mesh.colors[river], linear_rgba(RIVER_RGB, 255));
-    let srgb = ground_colour(&planet.mesh, Palette::of(&params), v.p(), v.ground - params.sea_level_m);
+    let srgb = crate::export::climate::ground_colour(
+        &planet.mesh,
+        crate::export::climate::Palette::of(&params),
+        v.p(),
+        v.ground - params.sea_level_m,
+    );
     assert_eq!(terrain_mesh(&planet.mesh, &params, None).colors[river], linear_rgba(srgb, 255));
 }

@@ -8,6 +8,7 @@
 
 pub mod climate;
 pub mod cog;
+pub mod colour_mip;
 pub mod dem;
 pub mod face_index;
 pub mod geojson;

@@ -286,4 +286,4 @@ mod tests;
 #[cfg(test)]
 mod tests_climate;
 #[cfg(test)]
-mod tests_relief;
+pub(crate) mod tests_relief;

@@ -20,7 +20,7 @@ fn from_map(path: &str) -> Option<Planet> {
 }
 
 /// The planet of the shipped Earth DEM, built once for every test that reads it.
-fn earth() -> Option<&'static Planet> {
+pub(crate) fn earth() -> Option<&'static Planet> {
     static EARTH: std::sync::OnceLock<Option<Planet>> = std::sync::OnceLock::new();
     EARTH.get_or_init(|| from_map("maps/earth_etopo5_1024x512.tif")).as_ref()
 }

@@ -225,9 +225,10 @@ fn render(
 /// as wide as their channels, a regional elevation map's coast outside its bounds; 8: view.glb
 /// and 3D Tiles contents quantized and meshopt-compressed by default, their vertex colours
 /// linear as glTF defines them; 9-11: landform detail, the map's roughness, Earth's snow line;
-/// 12: ground colours by the climate's moisture), so
+/// 12: ground colours by the climate's moisture; 13: coarse 3D Tiles levels' colours are
+/// means of the fine surface), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "12";
+pub const ANSWERS_REVISION: &str = "13";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -12,6 +12,8 @@ use super::bounds::{local_axes, OrientedBox};
 use super::key::TileKey;
 use super::ring::border_normals;
 use super::tree::{Refiner, ROOTS};
+use crate::export::climate::vertex_colour;
+use crate::export::colour_mip::ColourMip;
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
 use crate::export::view::water_mesh;
 use crate::export::water::water_levels;
@@ -21,13 +23,15 @@ use crate::params::Params;
 use glam::{DQuat, DVec3};
 use std::collections::{HashMap, HashSet};
 
-/// How a level's content is made: bisections from the cell to its triangles, skirt length and
-/// the pad its box leaves for the levels below.
+/// How a level's content is made: bisections from the cell to its triangles, skirt length,
+/// the pad its box leaves for the levels below, and the radius of ground a vertex's colour
+/// stands for (`colour_mip.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContentSpec {
     pub content_depth: u32,
     pub skirt_m: f64,
     pub pad_m: f64,
+    pub footprint_m: f64,
 }
 
 /// A tile's content and where it sits.
@@ -69,12 +73,14 @@ pub fn cell_frame(refiner: &mut Refiner, key: TileKey) -> ([u32; 3], [DVec3; 3])
     (node, axes)
 }
 
-/// The content of `key`, its `.glb` stored as `compression` says.
+/// The content of `key`, its `.glb` stored as `compression` says; with `colours`, each vertex
+/// coloured as the mean of the base mesh's within the spec's footprint.
 pub fn tile_content(
     refiner: &mut Refiner,
     key: TileKey,
     spec: &ContentSpec,
     params: &Params,
+    colours: Option<&ColourMip>,
     compression: Compression,
 ) -> TileContent {
     let (cell, axes) = cell_frame(refiner, key);
@@ -100,6 +106,11 @@ pub fn tile_content(
     let origin = bounds.centre;
     let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &triangles, &normals);
     terrain.translation = None;
+    if let Some(mip) = colours {
+        terrain.colors = (0..surface.vertices.len())
+            .map(|v| mip.mean(surface.vertices[v].p(), spec.footprint_m, vertex_colour(&surface, params, v)))
+            .collect();
+    }
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
     let mut water = water_mesh(&surface, origin, &triangles, &levels);
     water.translation = None;

@@ -92,6 +92,8 @@ pub struct PlanetTiles {
     faces: OnceLock<crate::export::face_index::FaceIndex>,
     /// The rivers and lakes as lines for vector tiles, made by the first.
     rivers: OnceLock<crate::export::vector_tiles::RiverLines>,
+    /// The base mesh's colours for coarse levels' means, made by the first content.
+    colours: OnceLock<crate::export::colour_mip::ColourMip>,
     /// Buffers of finished refinements, for the next ones (at most [`MAX_SPARES`]).
     spares: Mutex<Vec<crate::mesh::Mesh>>,
 }
@@ -120,6 +122,7 @@ impl PlanetTiles {
             planet_bounds: OnceLock::new(),
             faces: OnceLock::new(),
             rivers: OnceLock::new(),
+            colours: OnceLock::new(),
             spares: Mutex::new(Vec::new()),
         })
     }
@@ -183,6 +186,7 @@ impl PlanetTiles {
             + self.placements.lock().expect("placements lock").len() * 256
             + self.faces.get().map_or(0, |f| f.bytes())
             + self.rivers.get().map_or(0, |r| r.bytes())
+            + self.colours.get().map_or(0, |c| c.bytes())
             + MAX_SPARES * self.planet.mesh.capacity_bytes() * 5 / 4
     }
 
@@ -200,6 +204,7 @@ impl PlanetTiles {
             content_depth: CONTENT_DEPTH,
             skirt_m: self.geometric_error(level),
             pad_m: PAD_EDGES * self.edge_length(level) + cell_edge * cell_edge / (4.0 * self.params.radius_m),
+            footprint_m: 0.5 * self.edge_length(level),
         }
     }
 
@@ -209,7 +214,10 @@ impl PlanetTiles {
     pub fn content(&self, key: TileKey, compression: Compression) -> TileContent {
         assert!(key.level <= self.max_level, "tile {key} is deeper than level {}", self.max_level);
         let mut refiner = self.refiner();
-        let content = content::tile_content(&mut refiner, key, &self.spec(key.level), &self.params, compression);
+        let colours =
+            self.colours.get_or_init(|| crate::export::colour_mip::ColourMip::new(&self.planet.mesh, &self.params));
+        let spec = self.spec(key.level);
+        let content = content::tile_content(&mut refiner, key, &spec, &self.params, Some(colours), compression);
         self.recycle(refiner);
         content
     }
