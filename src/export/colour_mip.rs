@@ -12,13 +12,14 @@
 //! than the base mesh there), so deep levels are unchanged and the change between levels is
 //! gradual.
 //!
-//! The base vertices are bucketed by latitude and longitude (cells of about their spacing; only
-//! cells that hold points are stored). A lookup visits the cells of the disc's bounding box in
+//! The samples are bucketed by latitude and longitude ([`Buckets`], cells of about their
+//! spacing). A lookup visits the cells of the disc's bounding box in
 //! a fixed order, so the mean is a pure function of the planet, the position and `r`: the same
 //! vertex on two tiles' common border gets the same colour, bit for bit.
 
 use crate::export::climate::{climate_colour, precipitation_mm, vertex_colour, water_colour, Palette};
 use crate::export::glb::linear_rgba;
+use crate::geo::Buckets;
 use crate::mesh::Mesh;
 use crate::params::Params;
 use glam::DVec3;
@@ -35,17 +36,10 @@ struct Sample {
     rgb: [u8; 3],
 }
 
-/// The base mesh's vertex colours and areas, bucketed for disc means.
+/// The finest surface's colours and areas, bucketed for disc means.
 pub struct ColourMip {
     radius: f64,
-    cell_deg: f64,
-    rows: usize,
-    cols: usize,
-    /// Numbers (`row * cols + col`, rows from 90°S) of the cells that hold samples, ascending.
-    cells: Vec<u64>,
-    /// Samples of `cells[i]` are `samples[start[i]..start[i + 1]]`.
-    start: Vec<u32>,
-    samples: Vec<Sample>,
+    samples: Buckets<Sample>,
 }
 
 fn linear(srgb: [u8; 3]) -> [u8; 3] {
@@ -107,52 +101,11 @@ impl ColourMip {
         }
         // Cells about as wide as the mean spacing of the points.
         let spacing = (4.0 * std::f64::consts::PI / points.len().max(1) as f64).sqrt().to_degrees();
-        let cell_deg = spacing.clamp(0.01, 30.0);
-        let rows = (180.0 / cell_deg).ceil() as usize;
-        let cols = (360.0 / cell_deg).ceil() as usize;
-        let mut mip = ColourMip {
-            radius: base.radius,
-            cell_deg,
-            rows,
-            cols,
-            cells: Vec::new(),
-            start: vec![0],
-            samples: Vec::new(),
-        };
-        let mut sorted: Vec<(u64, usize)> = points.iter().enumerate().map(|(i, p)| (mip.cell_of(p.0), i)).collect();
-        sorted.sort_unstable();
-        for (k, &(cell, i)) in sorted.iter().enumerate() {
-            if mip.cells.last() != Some(&cell) {
-                if k > 0 {
-                    mip.start.push(k as u32);
-                }
-                mip.cells.push(cell);
-            }
-            let (d, a, rgb) = points[i];
-            mip.samples.push(Sample { dir: [d.x as f32, d.y as f32, d.z as f32], area: a as f32, rgb });
-        }
-        mip.start.push(sorted.len() as u32);
-        mip
-    }
-
-    fn row_col(&self, dir: DVec3) -> (usize, usize) {
-        let (lat, lon) = crate::geo::lat_lon(dir);
-        let row = ((lat + 90.0) / self.cell_deg).floor().clamp(0.0, (self.rows - 1) as f64) as usize;
-        let col = ((lon + 180.0) / self.cell_deg).floor().rem_euclid(self.cols as f64) as usize;
-        (row, col)
-    }
-
-    fn cell_of(&self, dir: DVec3) -> u64 {
-        let (r, c) = self.row_col(dir);
-        (r * self.cols + c) as u64
-    }
-
-    /// The samples of row `r`'s cells in columns `c0..=c1`.
-    fn row_samples(&self, r: usize, c0: usize, c1: usize) -> &[Sample] {
-        let base = (r * self.cols) as u64;
-        let lo = self.cells.partition_point(|&c| c < base + c0 as u64);
-        let hi = self.cells.partition_point(|&c| c <= base + c1 as u64);
-        &self.samples[self.start[lo] as usize..self.start[hi] as usize]
+        let items = points
+            .into_iter()
+            .map(|(d, a, rgb)| (d, Sample { dir: [d.x as f32, d.y as f32, d.z as f32], area: a as f32, rgb }))
+            .collect();
+        ColourMip { radius: base.radius, samples: Buckets::new(spacing, items) }
     }
 
     /// The colour (sRGB) of a vertex at `p` (planet frame) whose own colour is `own`, standing for
@@ -169,32 +122,21 @@ impl ColourMip {
         }
         let max_chord = (2.0 * (ang * 0.5).sin()) as f32;
         let d = [dir.x as f32, dir.y as f32, dir.z as f32];
-        let (lat, lon) = crate::geo::lat_lon(dir);
+        let g = &self.samples;
+        let lat = crate::geo::lat_lon(dir).0;
         let ang_deg = ang.to_degrees();
-        let row_of = |l: f64| ((l + 90.0) / self.cell_deg).floor().clamp(0.0, (self.rows - 1) as f64) as usize;
-        let (r0, r1) = (row_of(lat - ang_deg), row_of(lat + ang_deg));
+        let (r0, r1) = (g.row_of(lat - ang_deg), g.row_of(lat + ang_deg));
         let polar = (lat.abs() + ang_deg).min(90.0);
-        let half_cols = if polar >= 89.0 {
-            self.cols
+        let span = if polar >= 89.0 {
+            g.cols()
         } else {
-            (ang_deg / polar.to_radians().cos() / self.cell_deg).ceil() as usize + 1
+            (ang_deg / polar.to_radians().cos() / g.cell_deg()).ceil() as usize + 1
         };
-        let col = ((lon + 180.0) / self.cell_deg).floor().rem_euclid(self.cols as f64) as usize;
-        let ranges: Vec<(usize, usize)> = if 2 * half_cols + 1 >= self.cols {
-            vec![(0, self.cols - 1)]
-        } else {
-            let first = (col + self.cols - half_cols) % self.cols;
-            let last = first + 2 * half_cols;
-            if last < self.cols {
-                vec![(first, last)]
-            } else {
-                vec![(first, self.cols - 1), (0, last - self.cols)]
-            }
-        };
+        let ranges = g.column_ranges(g.row_col(dir).1, span.min(g.cols()));
         let (mut sum, mut covered) = ([0.0f64; 3], 0.0f64);
         for row in r0..=r1 {
-            for &(c0, c1) in &ranges {
-                for s in self.row_samples(row, c0, c1) {
+            for &(c0, c1) in ranges.iter().filter(|(c0, c1)| c0 <= c1) {
+                for s in g.row_items(row, c0, c1) {
                     let chord2 = (0..3).map(|i| (s.dir[i] - d[i]).powi(2)).sum::<f32>();
                     if chord2 <= max_chord * max_chord {
                         let a = f64::from(s.area);
@@ -215,7 +157,7 @@ impl ColourMip {
 
     /// Bytes held.
     pub fn bytes(&self) -> usize {
-        self.cells.len() * 8 + self.start.len() * 4 + self.samples.len() * std::mem::size_of::<Sample>()
+        self.samples.bytes()
     }
 }
 
@@ -242,7 +184,7 @@ mod tests {
         // leave (their weight is 1 - rho / r of their area: ~2 % here).
         let whole = std::f64::consts::PI * params.radius_m;
         let (mut sum, mut area) = ([0.0f64; 3], 0.0);
-        for s in &mip.samples {
+        for s in mip.samples.items() {
             area += f64::from(s.area);
             for (acc, &c) in sum.iter_mut().zip(&s.rgb) {
                 *acc += f64::from(s.area) * f64::from(c) / 255.0;

@@ -7,26 +7,18 @@
 //! (`planet/network.rs`: Leopold & Maddock, `w = 3.5 Q^0.51`); a river that does not flow all
 //! year (a wadi) has width 0, a dry bed.
 
+use crate::geo::Buckets;
 use glam::DVec3;
 
 /// Widths of the base mesh's river vertices, bucketed on a latitude/longitude grid whose cells
-/// are about as wide as a typical base-mesh river edge; a lookup searches outwards from its
-/// cell until no unsearched cell can hold a nearer point, up to the longest river edge. Only
-/// cells that hold points are stored (sorted by cell number), so a regional planet's fine grid
-/// costs its rivers' size, not the globe's.
+/// are about as wide as a typical base-mesh river edge ([`crate::geo::Buckets`]); a lookup
+/// searches outwards from its cell until no unsearched cell can hold a nearer point, up to the
+/// longest river edge.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Channels {
-    /// Grid cell size in degrees, rows (from 90°S) and columns (from 180°W).
-    cell_deg: f64,
-    rows: usize,
-    cols: usize,
     /// Farthest a point still gives its width, in degrees of arc.
     reach_deg: f64,
-    /// Numbers (`row * cols + col`) of the cells that hold points, ascending.
-    cells: Vec<u64>,
-    /// Points of `cells[i]` are `points[start[i]..start[i + 1]]`.
-    start: Vec<u32>,
-    points: Vec<([f64; 3], f32)>,
+    points: Buckets<([f64; 3], f32)>,
 }
 
 impl Channels {
@@ -38,79 +30,36 @@ impl Channels {
         if points.is_empty() {
             return None;
         }
-        let cell_deg = (cell_m / radius).to_degrees().clamp(0.01, 30.0);
-        let rows = (180.0 / cell_deg).ceil() as usize;
-        let cols = (360.0 / cell_deg).ceil() as usize;
-        let reach_deg = (reach_m / radius).to_degrees().max(cell_deg);
-        let mut grid =
-            Channels { cell_deg, rows, cols, reach_deg, cells: Vec::new(), start: vec![0], points: Vec::new() };
-        let mut sorted: Vec<(u64, usize)> =
-            points.iter().enumerate().map(|(i, (d, _))| (grid.cell_of(*d), i)).collect();
-        sorted.sort_unstable();
-        grid.points.reserve_exact(points.len());
-        for (n, &(cell, i)) in sorted.iter().enumerate() {
-            if grid.cells.last() != Some(&cell) {
-                if n > 0 {
-                    grid.start.push(n as u32);
-                }
-                grid.cells.push(cell);
-            }
-            let (d, w) = points[i];
-            grid.points.push((d.normalize().to_array(), w));
-        }
-        grid.start.push(points.len() as u32);
-        Some(grid)
-    }
-
-    fn row_col(&self, dir: DVec3) -> (usize, usize) {
-        let (lat, lon) = crate::geo::lat_lon(dir);
-        let row = ((lat + 90.0) / self.cell_deg).floor().clamp(0.0, (self.rows - 1) as f64) as usize;
-        let col = ((lon + 180.0) / self.cell_deg).floor().rem_euclid(self.cols as f64) as usize;
-        (row, col)
-    }
-
-    fn cell_of(&self, dir: DVec3) -> u64 {
-        let (r, c) = self.row_col(dir);
-        (r * self.cols + c) as u64
-    }
-
-    /// The points of row `r`'s cells in columns `c0..=c1`.
-    fn row_points(&self, r: usize, c0: usize, c1: usize) -> &[([f64; 3], f32)] {
-        let base = (r * self.cols) as u64;
-        let lo = self.cells.partition_point(|&c| c < base + c0 as u64);
-        let hi = self.cells.partition_point(|&c| c <= base + c1 as u64);
-        &self.points[self.start[lo] as usize..self.start[hi] as usize]
+        let cell_deg = (cell_m / radius).to_degrees();
+        let items = points.iter().map(|&(d, w)| (d, (d.normalize().to_array(), w))).collect();
+        let points = Buckets::new(cell_deg, items);
+        let reach_deg = (reach_m / radius).to_degrees().max(points.cell_deg());
+        Some(Channels { reach_deg, points })
     }
 
     /// Width (m) of the base-mesh river vertex nearest to `dir` (a unit direction), if one lies
     /// within the reach given to [`Channels::new`]; ties go to the first stored.
     pub fn width_at(&self, dir: DVec3) -> Option<f32> {
-        let (row, col) = self.row_col(dir);
-        let lat = (row as f64 + 0.5) * self.cell_deg - 90.0;
+        let g = &self.points;
+        let (cell_deg, rows, cols) = (g.cell_deg(), g.rows(), g.cols());
+        let (row, col) = g.row_col(dir);
+        let lat = (row as f64 + 0.5) * cell_deg - 90.0;
         let chord = |deg: f64| (deg.to_radians() * 0.5).sin() * 2.0;
         let max_chord = chord(self.reach_deg);
         let mut best: Option<(f64, f32)> = None;
-        let rings = (self.reach_deg / self.cell_deg).ceil() as usize + 1;
+        let rings = (self.reach_deg / cell_deg).ceil() as usize + 1;
         for k in 1..=rings {
             // Rows within k cells; columns spanning k cells' width at the widest latitude.
-            let edge_lat = lat.abs() + (k as f64 + 0.5) * self.cell_deg;
+            let edge_lat = lat.abs() + (k as f64 + 0.5) * cell_deg;
             let span = if edge_lat >= 89.0 {
-                self.cols
+                cols
             } else {
-                ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(self.cols)
+                ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(cols)
             };
-            // Column ranges without wrapping: all, one, or two across the antimeridian.
-            let first = (col + self.cols - span % self.cols) % self.cols;
-            let ranges = if 2 * span + 1 >= self.cols {
-                [(0, self.cols - 1), (1, 0)]
-            } else if first + 2 * span < self.cols {
-                [(first, first + 2 * span), (1, 0)]
-            } else {
-                [(first, self.cols - 1), (0, first + 2 * span - self.cols)]
-            };
-            for r in row.saturating_sub(k)..=(row + k).min(self.rows - 1) {
+            let ranges = g.column_ranges(col, span);
+            for r in row.saturating_sub(k)..=(row + k).min(rows - 1) {
                 for &(c0, c1) in ranges.iter().filter(|(c0, c1)| c0 <= c1) {
-                    for &(p, w) in self.row_points(r, c0, c1) {
+                    for &(p, w) in g.row_items(r, c0, c1) {
                         let d = DVec3::from_array(p).distance(dir);
                         if d <= max_chord && best.is_none_or(|(bd, _)| d < bd) {
                             best = Some((d, w));
@@ -119,7 +68,7 @@ impl Channels {
                 }
             }
             // Any cell not yet searched lies at least k - 1 cells away.
-            if best.is_some_and(|(d, _)| d <= chord((k - 1) as f64 * self.cell_deg)) {
+            if best.is_some_and(|(d, _)| d <= chord((k - 1) as f64 * cell_deg)) {
                 break;
             }
         }
@@ -128,7 +77,7 @@ impl Channels {
 
     /// Bytes held.
     pub fn bytes(&self) -> usize {
-        self.cells.len() * 8 + self.start.len() * 4 + self.points.len() * std::mem::size_of::<([f64; 3], f32)>()
+        self.points.bytes()
     }
 }
 

@@ -304,3 +304,89 @@ fn rivers_narrower_than_a_pixel_stay_visible_as_lines() {
     let (_, _, _, _, sand) = view(22.0, 12.0);
     assert!(sand < 0.01, "lines over {:.1} % of the Sahara's sand", sand * 100.0);
 }
+
+/// From 2 km above a river, looking straight down, its water should be as wide on screen as
+/// its channel (`3.5 Q^0.51` m at the discharge through it), within 30 %: counted in pixels
+/// across the river at the image's centre, on the line perpendicular to the river's edge there,
+/// at ~4.8 m a pixel. Rivers of several widths, off lakes and coasts, on the Earth DEM planet.
+///
+/// Not met yet (ignored; run with `--ignored`, `RIVER_SHOTS=DIR` keeps the pictures): measured
+/// 43 m for a 623 m channel and 29 m for a 390 m one (ratios 0.07). A view this close refines
+/// the ground beside a river to edges of metres, and the split rule raises every vertex beside a
+/// river to its bank (eq. 11); the water surface reaches only the faces around the river's
+/// vertices (`export/water.rs`), two edges wide. Meeting it needs the channel carved into the
+/// ground where the mesh is finer than the channel (the split rule, with its WGSL twin).
+#[test]
+#[ignore]
+fn a_river_seen_from_2_km_is_as_wide_as_its_channel() {
+    let (planet, params) = earth_dem();
+    let mesh = &planet.mesh;
+    let (altitude, size, fov) = (2_000.0, 480u32, 60.0f64);
+    // Base-mesh river vertices whose channels a 2 km view frames (300-1,500 m), six spread
+    // over the list; those where the view's mesh joins more than two river edges (a
+    // confluence) are left out.
+    let rivers: Vec<u32> = (0..mesh.vertices.len() as u32)
+        .filter(|&v| {
+            let vert = &mesh.vertices[v as usize];
+            vert.flags.contains(VertexFlags::RIVER)
+                && !vert.flags.intersects(VertexFlags(VertexFlags::LAKE.0 | VertexFlags::COAST.0))
+                && crate::export::water::channel_width(mesh, vert).is_some_and(|w| (300.0..1_500.0).contains(&w))
+        })
+        .collect();
+    assert!(rivers.len() > 50, "{} wide river vertices", rivers.len());
+    let mut ratios = Vec::new();
+    for &v in rivers.iter().step_by(rivers.len() / 6).take(6) {
+        let vert = &mesh.vertices[v as usize];
+        let (p, up) = (vert.p(), vert.p().normalize());
+        let water = p + up * (vert.water - vert.ground).max(0.0);
+        let eye = water + up * altitude;
+        let q = format!(
+            "eye={},{},{}&target={},{},{}&width={size}&height={size}&fov={fov}",
+            eye.x, eye.y, eye.z, water.x, water.y, water.z
+        );
+        let cam = Camera::parse_query(&q, params.radius_m).unwrap().0;
+        let mut adapter = crate::adapt::Adapter::new(mesh.clone(), params.clone());
+        adapter.adapt(&cam, Some(1_000_000));
+        let m = adapter.mesh();
+        // The river's direction at the vertex: its river edges in the view's mesh.
+        let at = (0..m.vertices.len())
+            .min_by(|&a, &b| m.vertices[a].p().distance(p).total_cmp(&m.vertices[b].p().distance(p)));
+        let at = at.unwrap() as u32;
+        let ends: Vec<DVec3> = m
+            .edges
+            .iter()
+            .filter(|e| e.kind == crate::mesh::EdgeKind::River && e.v.contains(&at))
+            .map(|e| m.vertices[(e.v[0] + e.v[1] - at) as usize].p())
+            .collect();
+        if ends.len() != 2 {
+            continue;
+        }
+        let width = crate::export::water::channel_width(m, &m.vertices[at as usize]).unwrap();
+        let scene = scene::prepare(m, params, &cam, scene::default_sun(&cam));
+        let img = renderer().draw(&scene, crate::export::climate::Palette::of(params), size, size).unwrap();
+        if let Ok(dir) = std::env::var("RIVER_SHOTS") {
+            std::fs::write(format!("{dir}/river-{v}.png"), encode(&img, size, size, ImageFormat::Png)).unwrap();
+        }
+        // Screen direction of the river, and the pixels across it from the centre.
+        let towards = |e: DVec3| water + (e - p).normalize() * 100.0;
+        let (a, b) = (pixel_of(&cam, towards(ends[0])), pixel_of(&cam, towards(ends[1])));
+        let (Some(a), Some(b)) = (a, b) else { continue };
+        let along = glam::DVec2::new(f64::from(b.0) - f64::from(a.0), f64::from(b.1) - f64::from(a.1)).normalize();
+        let across = glam::DVec2::new(-along.y, along.x);
+        let centre = glam::DVec2::splat(f64::from(size) * 0.5);
+        let is_water = |q: glam::DVec2| {
+            let (x, y) = (q.x.round() as i64, q.y.round() as i64);
+            (0..i64::from(size)).contains(&x) && (0..i64::from(size)).contains(&y) && {
+                let [r, g, b] = rgb(&img, &cam, (x as u32, y as u32));
+                b > r + 20 && b > g
+            }
+        };
+        let run = |dir: f64| (0..size).take_while(|&k| is_water(centre + across * dir * f64::from(k))).count();
+        let pixels = (run(1.0) + run(-1.0)).saturating_sub(1) as f64;
+        let metres_per_pixel = 2.0 * altitude * (fov.to_radians() * 0.5).tan() / f64::from(size);
+        ratios.push((width.round(), (pixels * metres_per_pixel).round(), pixels * metres_per_pixel / width));
+    }
+    println!("channel width, width on screen (m), ratio: {ratios:?}");
+    assert!(ratios.len() >= 4, "{ratios:?}");
+    assert!(ratios.iter().all(|r| (0.7..=1.3).contains(&r.2)), "{ratios:?}");
+}
