@@ -5,9 +5,13 @@ import {
   AmbientLight,
   Color,
   DirectionalLight,
+  FrontSide,
   Matrix4,
+  Mesh,
   PerspectiveCamera,
   Scene,
+  ShaderMaterial,
+  SphereGeometry,
   Vector3,
   WebGLRenderer,
 } from 'three';
@@ -34,6 +38,58 @@ const sun = new DirectionalLight(0xffffff, 2.2);
 sun.position.set(1, 1, 2);
 camera.add(sun);
 scene.add(camera);
+
+// The atmosphere as render.png draws it (`shaders/render.wgsl`): a shell 60 km above the sea
+// whose fragments add the sky's colour by the length of the view ray inside the air, 1 -
+// exp(-path / 700 km) over the ground (haze) and 1 - exp(-path / 40 km) against space (the
+// limb's glow), lit by the sun at the ray's point nearest the planet. Computed in the planet
+// frame (the tiles group's), drawn after the tiles without a depth test: from outside, the
+// shell's front lies before anything it covers.
+const ATMOSPHERE_M = 60000;
+const atmosphere = new ShaderMaterial({
+  uniforms: {
+    eye: { value: new Vector3() },
+    sunDir: { value: new Vector3(0, 0, 1) },
+    radii: { value: new Vector3(1, 1 + ATMOSPHERE_M, 0) },
+  },
+  vertexShader: `
+    varying vec3 vLocal;
+    void main() {
+      vLocal = position;
+      gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+    }`,
+  fragmentShader: `
+    uniform vec3 eye;
+    uniform vec3 sunDir;
+    uniform vec3 radii;
+    varying vec3 vLocal;
+    const vec3 SKY = vec3(0.32, 0.55, 0.95);
+    void main() {
+      vec3 dir = normalize(vLocal - eye);
+      float b = dot(dir, -eye);
+      float h = dot(eye, eye) - b * b;
+      float ra = radii.y;
+      float s = sqrt(max(ra * ra - h, 0.0));
+      float t0 = max(b - s, 0.0);
+      float t1 = b + s;
+      float rg = radii.x;
+      bool ground = rg * rg - h > 0.0 && b - sqrt(rg * rg - h) > 0.0;
+      float tEnd = ground ? b - sqrt(rg * rg - h) : t1;
+      float path = max(tEnd - t0, 0.0);
+      float amount = 1.0 - exp(-path / (ground ? 700000.0 : 40000.0));
+      vec3 closest = normalize(eye + dir * max(ground ? tEnd : b, 0.0));
+      float daylight = smoothstep(-0.15, 0.25, dot(closest, sunDir));
+      gl_FragColor = vec4(SKY * daylight, amount);
+      #include <colorspace_fragment>
+    }`,
+  transparent: true,
+  depthTest: false,
+  depthWrite: false,
+  side: FrontSide,
+});
+let shell = null;
+const sunWorld = new Vector3();
+const sunTarget = new Vector3();
 
 const controls = new GlobeControls(scene, camera, canvas);
 controls.enableDamping = true;
@@ -78,6 +134,12 @@ function open(id) {
   tiles.setResolutionFromRenderer(camera, renderer);
   tiles.addEventListener('load-root-tileset', () => {
     const r = tiles.ellipsoid.radius.x;
+    if (shell) shell.removeFromParent();
+    atmosphere.uniforms.radii.value.set(r, r + ATMOSPHERE_M, 0);
+    shell = new Mesh(new SphereGeometry(r + ATMOSPHERE_M, 128, 64), atmosphere);
+    shell.renderOrder = 1;
+    shell.frustumCulled = false;
+    tiles.group.add(shell);
     camera.position.set(2.2 * r, 0.9 * r, 1.5 * r);
     camera.up.set(0, 0, 1);
     camera.lookAt(0, 0, 0);
@@ -112,6 +174,13 @@ function frame() {
   if (tiles) {
     tiles.setResolutionFromRenderer(camera, renderer);
     tiles.update();
+    // The atmosphere's eye and sun in the planet frame.
+    const toPlanet = new Matrix4().copy(tiles.group.matrixWorld).invert();
+    atmosphere.uniforms.eye.value.copy(camera.position).applyMatrix4(toPlanet);
+    // Towards the sun: from the light's target to the light.
+    sun.getWorldPosition(sunWorld);
+    sun.target.getWorldPosition(sunTarget);
+    atmosphere.uniforms.sunDir.value.copy(sunWorld.sub(sunTarget)).transformDirection(toPlanet);
     const t = tiles.stats;
     stats.pending = t.queued + t.downloading + t.parsing;
   }
