@@ -521,7 +521,7 @@ fn run_view(
     }
     let cam = cams.last().expect("at least one camera");
     let origin = riverworld::export::view::local_origin(cam.eye, radius);
-    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, origin, compression)
+    let glb = riverworld::export::view::view_glb(adapter.mesh(), &spec.params, cam, origin, compression)
         .map_err(|e| input(format!("--max-faces: {e}: ask for fewer faces")))?;
     files::write_outputs(out.parent().unwrap_or(std::path::Path::new(".")), &[(file_name, glb)])?;
     if stats {

@@ -334,8 +334,9 @@ fn render_writes_identical_images_in_the_asked_format_and_refuses_bad_input() {
     assert!(!dir.join("x.png").exists());
 }
 
-/// Every mesh's triangles in a glb, each as its corners' position bits starting from the least,
-/// sorted: what the file shows whatever order it lists vertices and triangles in.
+/// Every mesh's triangles (or line segments) in a glb, each as its corners' position bits
+/// starting from the least, sorted: what the file shows whatever order it lists vertices and
+/// triangles in.
 fn glb_triangles(glb: &[u8]) -> Vec<Vec<[[u32; 3]; 3]>> {
     let word = |at: usize| u32::from_le_bytes(glb[at..at + 4].try_into().unwrap()) as usize;
     let json_len = word(12);
@@ -366,9 +367,16 @@ fn glb_triangles(glb: &[u8]) -> Vec<Vec<[[u32; 3]; 3]>> {
             let p = &m["primitives"][0];
             let pos = words(&p["attributes"]["POSITION"]);
             let corner = |i: u32| -> [u32; 3] { pos[3 * i as usize..3 * i as usize + 3].try_into().unwrap() };
+            // A LINES primitive (the rivers): each segment as its ends, least first, the last
+            // repeated.
+            let per = if p["mode"].as_u64() == Some(1) { 2 } else { 3 };
             let mut tris: Vec<[[u32; 3]; 3]> = words(&p["indices"])
-                .chunks(3)
+                .chunks(per)
                 .map(|t| {
+                    if per == 2 {
+                        let (a, b) = (corner(t[0]).min(corner(t[1])), corner(t[0]).max(corner(t[1])));
+                        return [a, b, b];
+                    }
                     let c = [corner(t[0]), corner(t[1]), corner(t[2])];
                     let first = (0..3).min_by_key(|&k| c[k]).unwrap();
                     [c[first], c[(first + 1) % 3], c[(first + 2) % 3]]

@@ -4,13 +4,16 @@
 //! A level-0 tile's vertices lie ~300 km apart; coloured by their own ground alone, each shows
 //! whatever its point holds (a snowy summit, a lake bed, a coast) and the planet's first picture
 //! is a speckle. Here a vertex stands for its footprint, a disc of radius `r` (half the level's
-//! edge), and takes the mean colour, in linear light, of the base-mesh vertices inside it,
-//! each weighted by the area it stands for (`a`, a third of its faces') times how much finer
-//! it is than the footprint, `max(0, 1 - rho / r)` with `rho = sqrt(a / pi)`; the vertex's own
-//! colour fills the rest of the disc. A footprint many base vertices wide is their mean; one
-//! no wider than a base vertex's keeps the vertex's own colour (the refined surface is finer
-//! than the base mesh there), so deep levels are unchanged and the change between levels is
-//! gradual.
+//! edge), and takes the mean colour, in linear light, of the finest surface known inside it:
+//! the elevation map's cells (its guide grid, `mesh/guide.rs`) where the planet has a map —
+//! the splits below the base mesh follow the map itself, while the base mesh's vertices sample
+//! it box-filtered over their spacing — and the base mesh's vertices elsewhere. Each sample is
+//! weighted by the area it stands for (`a`: a cell's, or a third of a vertex's faces') times
+//! how much finer it is than the footprint, `max(0, 1 - rho / r)` with `rho = sqrt(a / pi)`;
+//! the vertex's own colour fills the rest of the disc. A footprint many samples wide is their
+//! mean; one no wider than a sample keeps the vertex's own colour (the refined surface is
+//! finer there), so deep levels are unchanged and the change between levels is gradual. A map
+//! cell is land above sea level (a dry depression below it, such as Qattara, counts as water).
 //!
 //! The samples are bucketed by latitude and longitude ([`Buckets`], cells of about their
 //! spacing). A lookup visits the cells of the disc's bounding box in
@@ -48,7 +51,8 @@ fn linear(srgb: [u8; 3]) -> [u8; 3] {
 }
 
 impl ColourMip {
-    /// The base mesh's colours with `params`' palette and sea level.
+    /// The samples of `base` (its map's guide cells and its vertices beyond them), coloured with
+    /// `params`' palette and sea level.
     pub fn new(base: &Mesh, params: &Params) -> ColourMip {
         let n = base.vertices.len();
         let mut area = vec![0.0f64; n];
@@ -109,8 +113,8 @@ impl ColourMip {
     }
 
     /// The colour (sRGB) of a vertex at `p` (planet frame) whose own colour is `own`, standing for
-    /// the ground within `r` metres: the area-weighted mean, in linear light, of the base
-    /// vertices within `r` and of `own` over the rest of the disc.
+    /// the ground within `r` metres: the weighted mean, in linear light, of the samples within
+    /// `r` and of `own` over the rest of the disc (see the module's doc).
     pub fn mean(&self, p: DVec3, r: f64, own: [u8; 3]) -> [u8; 4] {
         let own_lin = linear(own).map(|c| f64::from(c) / 255.0);
         let dir = p.normalize();

@@ -12,7 +12,7 @@
 
 use super::climate::vertex_colour;
 pub use super::glb_pack::Compression;
-use super::glb_pack::{meshopt_stream, quantize_normals, quantize_positions, StreamKind};
+use super::glb_pack::{meshopt_stream, quantize_line_positions, quantize_normals, quantize_positions, StreamKind};
 use super::surface_normals;
 use crate::mesh::{Mesh, VertexFlags};
 use crate::params::Params;
@@ -32,8 +32,10 @@ pub struct GlbMesh {
     /// as glTF defines COLOR_0 ([`linear_rgba`] makes them from sRGB). Any alpha below 255 gives
     /// the primitive a blended material.
     pub colors: Vec<[u8; 4]>,
-    /// Triangles, counter-clockwise seen from the front.
+    /// Triangles, counter-clockwise seen from the front; or, with `lines`, line segments.
     pub indices: Vec<u32>,
+    /// Whether `indices` are line segments (pairs) rather than triangles.
+    pub lines: bool,
     /// Local origin of the positions (node translation), metres in glTF axes. Written with full
     /// `f64` precision, so positions can stay small `f32` offsets.
     pub translation: Option<[f64; 3]>,
@@ -122,6 +124,7 @@ pub fn terrain_mesh_with_normals(
             .map(|v| linear_rgba(vertex_colour(mesh, params, v), 255))
             .collect(),
         indices: triangles.par_iter().flat_map_iter(|t| *t).collect(),
+        lines: false,
         translation: origin.map(|o| to_gltf_axes(o.to_array())),
     }
 }
@@ -149,9 +152,12 @@ enum ViewData<'a> {
     Short4(Vec<[i16; 4]>),
     /// Quantized normals (x, y, z, pad).
     Byte4(Vec<[i8; 4]>),
-    /// Indices written as u16 (all below 65535).
+    /// Triangle indices written as u16 (all below 65535), or as u32.
     U16(&'a [u32]),
     U32(&'a [u32]),
+    /// Line segments' indices, likewise.
+    Lines16(&'a [u32]),
+    Lines32(&'a [u32]),
 }
 
 impl ViewData<'_> {
@@ -161,8 +167,8 @@ impl ViewData<'_> {
             ViewData::Rgba(c) => c.len() * 4,
             ViewData::Short4(v) => v.len() * 8,
             ViewData::Byte4(v) => v.len() * 4,
-            ViewData::U16(i) => i.len() * 2,
-            ViewData::U32(i) => i.len() * 4,
+            ViewData::U16(i) | ViewData::Lines16(i) => i.len() * 2,
+            ViewData::U32(i) | ViewData::Lines32(i) => i.len() * 4,
         }
     }
 
@@ -174,6 +180,8 @@ impl ViewData<'_> {
             ViewData::Short4(_) => StreamKind::Attributes { stride: 8 },
             ViewData::U16(_) => StreamKind::Triangles { stride: 2, vertices },
             ViewData::U32(_) => StreamKind::Triangles { stride: 4, vertices },
+            ViewData::Lines16(_) => StreamKind::Indices { stride: 2, vertices },
+            ViewData::Lines32(_) => StreamKind::Indices { stride: 4, vertices },
         }
     }
 
@@ -186,9 +194,11 @@ impl ViewData<'_> {
             ViewData::Rgba(c) => out.extend_from_slice(bytemuck::cast_slice(c)),
             ViewData::Short4(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
             ViewData::Byte4(v) => out.extend(v.iter().flatten().map(|&x| x as u8)),
-            ViewData::U16(i) => i.iter().for_each(|&i| out.extend_from_slice(&(i as u16).to_le_bytes())),
-            ViewData::U32(i) if little => out.extend_from_slice(bytemuck::cast_slice(i)),
-            ViewData::U32(i) => i.iter().for_each(|i| out.extend_from_slice(&i.to_le_bytes())),
+            ViewData::U16(i) | ViewData::Lines16(i) => {
+                i.iter().for_each(|&i| out.extend_from_slice(&(i as u16).to_le_bytes()))
+            }
+            ViewData::U32(i) | ViewData::Lines32(i) if little => out.extend_from_slice(bytemuck::cast_slice(i)),
+            ViewData::U32(i) | ViewData::Lines32(i) => i.iter().for_each(|i| out.extend_from_slice(&i.to_le_bytes())),
         }
         out.resize(out.len().next_multiple_of(4), 0);
     }
@@ -270,7 +280,8 @@ fn material(root: &mut json::Root, blend: bool) -> json::Index<json::Material> {
     })
 }
 
-/// Encodes meshes as one `.glb`: one glTF mesh (one TRIANGLES primitive), one node and one set of
+/// Encodes meshes as one `.glb`: one glTF mesh (one TRIANGLES primitive, or LINES for `lines`),
+/// one node and one set of
 /// accessors per [`GlbMesh`], in order, all in one binary buffer and one default scene, stored
 /// as `compression` says (`glb_pack.rs`). Meshes without positions or indices are left out (no
 /// meshes at all: no scene, no buffer). Panics if `normals` or `colors` is neither empty nor as
@@ -295,7 +306,18 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     let packed = compression == Compression::Meshopt;
     let reordered: Vec<GlbMesh>;
     let meshes = if packed {
-        reordered = meshes.iter().map(|m| if m.indices.is_empty() { GlbMesh::default() } else { reorder(m) }).collect();
+        reordered = meshes
+            .iter()
+            .map(|m| {
+                if m.indices.is_empty() {
+                    GlbMesh::default()
+                } else if m.lines {
+                    m.clone()
+                } else {
+                    reorder(m)
+                }
+            })
+            .collect();
         &reordered[..]
     } else {
         meshes
@@ -310,7 +332,11 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
         let n = m.positions.len();
         let mut attributes = BTreeMap::new();
-        let quantized = if packed { quantize_positions(&m.positions, &m.indices) } else { None };
+        let quantized = match (packed, m.lines) {
+            (false, _) => None,
+            (true, false) => quantize_positions(&m.positions, &m.indices),
+            (true, true) => quantize_line_positions(&m.positions, &m.indices),
+        };
         let (position, transform) = match quantized {
             Some(q) => {
                 let (lo, hi) = extent(q.values.iter().map(|v| [v[0], v[1], v[2]]), i16::MAX, i16::MIN);
@@ -347,10 +373,11 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
             attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
         }
         // 16-bit indices where they fit (65535 itself is reserved for primitive restart).
-        let (data, component) = if n <= usize::from(u16::MAX) {
-            (ViewData::U16(&m.indices), ComponentType::U16)
-        } else {
-            (ViewData::U32(&m.indices), ComponentType::U32)
+        let (data, component) = match (n <= usize::from(u16::MAX), m.lines) {
+            (true, false) => (ViewData::U16(&m.indices), ComponentType::U16),
+            (false, false) => (ViewData::U32(&m.indices), ComponentType::U32),
+            (true, true) => (ViewData::Lines16(&m.indices), ComponentType::U16),
+            (false, true) => (ViewData::Lines32(&m.indices), ComponentType::U32),
         };
         let view = layout.push(&mut root, data, n, ElementArrayBuffer, false);
         let indices = root.push(accessor(view, m.indices.len(), component, Type::Scalar, false, None));
@@ -365,7 +392,7 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
             extras: Default::default(),
             indices: Some(indices),
             material: Some(mat),
-            mode: Valid(json::mesh::Mode::Triangles),
+            mode: Valid(if m.lines { json::mesh::Mode::Lines } else { json::mesh::Mode::Triangles }),
             targets: None,
         };
         let mesh = root.push(json::Mesh {
@@ -498,6 +525,7 @@ pub fn reorder(m: &GlbMesh) -> GlbMesh {
         normals: apply(&m.normals, &remap, kept),
         colors: apply(&m.colors, &remap, kept),
         indices: indices.iter().map(|&i| remap[i as usize]).collect(),
+        lines: false,
         translation: m.translation,
     }
 }

@@ -70,6 +70,16 @@ pub struct QuantizedPositions {
 /// Positions of a triangle list as `i16` steps when a step is at most
 /// 1/[`POSITION_STEPS_PER_EDGE`] of the shortest edge and [`MAX_POSITION_STEP_M`], else `None`.
 pub fn quantize_positions(positions: &[[f32; 3]], indices: &[u32]) -> Option<QuantizedPositions> {
+    let edges = indices.chunks_exact(3).flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]);
+    quantize_with_edges(positions, edges)
+}
+
+/// [`quantize_positions`] of a list of line segments (index pairs).
+pub fn quantize_line_positions(positions: &[[f32; 3]], indices: &[u32]) -> Option<QuantizedPositions> {
+    quantize_with_edges(positions, indices.chunks_exact(2).map(|s| (s[0], s[1])))
+}
+
+fn quantize_with_edges(positions: &[[f32; 3]], edges: impl Iterator<Item = (u32, u32)>) -> Option<QuantizedPositions> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for p in positions {
@@ -85,9 +95,7 @@ pub fn quantize_positions(positions: &[[f32; 3]], indices: &[u32]) -> Option<Qua
     }
     let step = half / f64::from(i16::MAX);
     let at = |i: u32| positions[i as usize].map(f64::from);
-    let shortest = indices
-        .chunks_exact(3)
-        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+    let shortest = edges
         .map(|(a, b)| {
             let (a, b) = (at(a), at(b));
             (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt()
@@ -119,6 +127,8 @@ pub enum StreamKind {
     Attributes { stride: usize },
     /// A triangle list of `u16` (`stride` 2) or `u32` (4) indices below `vertices`.
     Triangles { stride: usize, vertices: usize },
+    /// Any other index list (line segments), as for `Triangles`.
+    Indices { stride: usize, vertices: usize },
 }
 
 impl StreamKind {
@@ -127,12 +137,15 @@ impl StreamKind {
         match self {
             StreamKind::Attributes { .. } => "ATTRIBUTES",
             StreamKind::Triangles { .. } => "TRIANGLES",
+            StreamKind::Indices { .. } => "INDICES",
         }
     }
 
     pub fn stride(self) -> usize {
         match self {
-            StreamKind::Attributes { stride } | StreamKind::Triangles { stride, .. } => stride,
+            StreamKind::Attributes { stride }
+            | StreamKind::Triangles { stride, .. }
+            | StreamKind::Indices { stride, .. } => stride,
         }
     }
 }
@@ -149,13 +162,17 @@ pub fn meshopt_stream(bytes: &[u8], kind: StreamKind) -> Vec<u8> {
         StreamKind::Attributes { stride: 8 } => vertices::<8>(bytes),
         StreamKind::Attributes { stride: 12 } => vertices::<12>(bytes),
         StreamKind::Attributes { stride } => panic!("no meshopt stream for {stride}-byte vertices"),
-        StreamKind::Triangles { stride, vertices } => {
+        StreamKind::Triangles { stride, vertices } | StreamKind::Indices { stride, vertices } => {
             let indices: Vec<u32> = match stride {
                 2 => bytes.chunks_exact(2).map(|c| u32::from(u16::from_le_bytes([c[0], c[1]]))).collect(),
                 4 => bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().expect("4 bytes"))).collect(),
                 _ => panic!("indices are 2 or 4 bytes"),
             };
-            meshopt::encode_index_buffer(&indices, vertices).expect("meshopt encodes indices")
+            if matches!(kind, StreamKind::Triangles { .. }) {
+                meshopt::encode_index_buffer(&indices, vertices).expect("meshopt encodes indices")
+            } else {
+                meshopt::encode_index_sequence(&indices, vertices).expect("meshopt encodes indices")
+            }
         }
     }
 }

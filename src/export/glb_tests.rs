@@ -159,6 +159,7 @@ fn encode_glb_writes_several_nodes_with_precise_translations() {
         normals: vec![[0.0, 0.0, 1.0]; 3],
         colors: vec![[10, 20, 30, 255]; 3],
         indices: vec![0, 1, 2],
+        lines: false,
         translation: Some([6_371_000.125, -12.5, 3.25]),
     };
     let water = GlbMesh { colors: vec![[0, 0, 255, 128]; 3], normals: Vec::new(), translation: None, ..tri.clone() };

@@ -1,10 +1,12 @@
-//! A view-dependent mesh (paper §5) as glTF: the adapted terrain relative to a local origin, and
-//! a translucent water surface wherever water stands above the ground (sea and rivers, §3.3).
+//! A view-dependent mesh (paper §5) as glTF: the adapted terrain relative to a local origin, a
+//! translucent water surface wherever water stands above the ground (sea and rivers, §3.3), and
+//! rivers narrower than a pixel as lines (as renders draw them).
 
 use super::climate::water_colour;
 use super::glb::{encode_glb, linear_rgba, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh, GlbTooLarge};
 use super::surface_normals;
-use super::water::{shows_water, water_levels};
+use super::water::{river_lines, shows_water, water_levels};
+use crate::adapt::Camera;
 use crate::mesh::split::position::lift;
 use crate::mesh::Mesh;
 use crate::params::Params;
@@ -19,10 +21,16 @@ pub fn local_origin(eye: DVec3, radius: f64) -> DVec3 {
     eye.normalize_or(DVec3::X) * radius
 }
 
-/// Terrain plus water surface as one `.glb`, positions relative to `origin`, stored as
-/// `compression` says; refused when it would be over the container's 4 GiB (about 80 million
-/// faces of a view mostly under water).
-pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3, compression: Compression) -> Result<Vec<u8>, GlbTooLarge> {
+/// Terrain, water surface and river lines (for `cam`) as one `.glb`, positions relative to
+/// `origin`, stored as `compression` says; refused when it would be over the container's 4 GiB
+/// (about 80 million faces of a view mostly under water).
+pub fn view_glb(
+    mesh: &Mesh,
+    params: &Params,
+    cam: &Camera,
+    origin: DVec3,
+    compression: Compression,
+) -> Result<Vec<u8>, GlbTooLarge> {
     let triangles = mesh.triangles();
     let normals = surface_normals(mesh, &triangles);
     let levels = water_levels(mesh, &triangles);
@@ -30,10 +38,51 @@ pub fn view_glb(mesh: &Mesh, params: &Params, origin: DVec3, compression: Compre
         &[
             terrain_mesh_with_normals(mesh, params, Some(origin), &triangles, &normals),
             water_mesh(mesh, origin, &triangles, &levels),
+            river_lines_mesh(mesh, cam, origin),
         ],
         compression,
     )
 }
+
+/// The rivers narrower than a pixel of `cam` ([`river_lines`]) as line segments along their
+/// water surface, coloured as water of the channel's depth, as opaque as the square root of
+/// the share of a pixel the channel covers (as renders draw them); positions relative to
+/// `origin`, each river vertex once. Segments whose channel covers under [`MIN_LINE_COVERAGE`]
+/// of a pixel at both ends (drawn below 1/30 opacity: streams metres wide seen from hundreds
+/// of kilometres) are left out, for smaller files. glTF lines are one pixel wide in the
+/// clients that draw them.
+pub fn river_lines_mesh(mesh: &Mesh, cam: &Camera, origin: DVec3) -> GlbMesh {
+    let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
+    let mut slot = std::collections::HashMap::new();
+    let mut ends = Vec::new();
+    let mut indices = Vec::new();
+    for segment in river_lines(mesh, cam.eye, pixel_per_m) {
+        if segment.iter().all(|e| e.coverage < MIN_LINE_COVERAGE) {
+            continue;
+        }
+        for e in segment {
+            let i = *slot.entry(e.vertex).or_insert_with(|| {
+                ends.push(e);
+                ends.len() as u32 - 1
+            });
+            indices.push(i);
+        }
+    }
+    GlbMesh {
+        positions: ends.iter().map(|e| to_gltf_axes((e.position - origin).to_array()).map(|x| x as f32)).collect(),
+        normals: Vec::new(),
+        colors: ends
+            .iter()
+            .map(|e| linear_rgba(water_colour(e.depth_m), (e.coverage.sqrt() * 255.0).round().clamp(1.0, 255.0) as u8))
+            .collect(),
+        indices,
+        lines: true,
+        translation: Some(to_gltf_axes(origin.to_array())),
+    }
+}
+
+/// Least share of a pixel a river's channel covers for [`river_lines_mesh`] to draw it.
+pub const MIN_LINE_COVERAGE: f64 = 1e-3;
 
 /// Of the mesh's `triangles` ([`Mesh::triangles`]), those that show water at the water
 /// `levels` ([`water_levels`]: a corner's level above its ground; dry corners below their
@@ -84,6 +133,7 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]], levels: &[
             })
             .collect(),
         indices,
+        lines: false,
         translation: Some(to_gltf_axes(origin.to_array())),
     }
 }
@@ -92,6 +142,37 @@ pub fn water_mesh(mesh: &Mesh, origin: DVec3, triangles: &[[u32; 3]], levels: &[
 mod tests {
     use super::*;
     use crate::adapt::{Adapter, Camera};
+
+    /// From orbit the test planet's perennial rivers, far narrower than a pixel, are lines:
+    /// as opaque as the square root of the share of the pixel they cover, water-coloured, at the
+    /// water surface of their river edges; the `.glb` holds them as a LINES primitive.
+    #[test]
+    fn a_view_from_orbit_draws_its_rivers_as_lines() {
+        let planet = crate::export::test_planet();
+        let p = Params { base_faces: 2000, ..Params::default() };
+        let r = p.radius_m;
+        let eye = crate::geo::direction(10.0, 20.0) * r * 3.0;
+        let cam = Camera::new(eye, DVec3::ZERO, None, 40.0, 640, 480, 8.0, 40.0, r).unwrap();
+        let mut a = Adapter::new(planet.mesh.clone(), p.clone());
+        a.adapt(&cam, Some(100_000));
+        let origin = local_origin(eye, r);
+        let lines = river_lines_mesh(a.mesh(), &cam, origin);
+        let segments = lines.indices.len() / 2;
+        assert!(lines.lines && segments > 50, "{segments} river segments");
+        let rivers = a.mesh().edges.iter().filter(|e| e.kind == crate::mesh::EdgeKind::River).count();
+        assert!(segments <= rivers);
+        assert!(lines.colors.iter().all(|c| c[3] >= 1 && c[2] > c[0]), "translucent water blue");
+        assert!(lines.colors.iter().any(|c| c[3] < 255), "sub-pixel rivers are translucent");
+        let glb = view_glb(a.mesh(), &p, &cam, origin, Compression::None).unwrap();
+        let json = crate::export::glb::tests::parse(&glb).value;
+        let modes: Vec<u64> = json["meshes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| m["primitives"][0]["mode"].as_u64().unwrap_or(4))
+            .collect();
+        assert_eq!(modes, vec![4, 4, 1], "terrain, water, river lines");
+    }
 
     #[test]
     fn view_glb_keeps_centimetres_near_the_origin() {
@@ -118,11 +199,12 @@ mod tests {
             }
         }
         assert!(near > 100, "{near}");
-        let glb = view_glb(a.mesh(), &p, origin, Compression::None).unwrap();
-        assert_eq!(view_glb(a.mesh(), &p, origin, Compression::None).unwrap(), glb);
-        // A valid glTF: the terrain with normals and the water surface, both at the origin.
+        let glb = view_glb(a.mesh(), &p, &cam, origin, Compression::None).unwrap();
+        assert_eq!(view_glb(a.mesh(), &p, &cam, origin, Compression::None).unwrap(), glb);
+        // A valid glTF: the terrain with normals, the water surface and the river lines (a
+        // river crosses this view), all at the origin.
         let parsed = crate::export::glb::tests::parse(&glb);
-        assert_eq!(parsed.root.nodes.len(), 2);
+        assert_eq!(parsed.root.nodes.len(), 3);
         for node in &parsed.value["nodes"].as_array().unwrap()[..] {
             let t = node["translation"].as_array().unwrap();
             // (serde_json reads the last digit of an f64 approximately.)

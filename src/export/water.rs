@@ -14,8 +14,44 @@
 //! surface would otherwise span the whole face, and a coarse tile or view would show land
 //! crossed by streams as water.
 
-use crate::mesh::{Mesh, Vertex, VertexFlags};
+use crate::mesh::{EdgeKind, Mesh, Vertex, VertexFlags};
+use glam::DVec3;
 use rayon::prelude::*;
+
+/// One end of a river line ([`river_lines`]): the mesh's vertex, a point of the water surface
+/// (planet frame), its local up, the share of a pixel the channel covers there (0-1) and the
+/// channel's depth (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineEnd {
+    pub vertex: u32,
+    pub position: DVec3,
+    pub up: DVec3,
+    pub coverage: f64,
+    pub depth_m: f64,
+}
+
+/// Rivers narrower than a pixel as lines, so that they stay visible at their true width: each
+/// river edge between two channelled vertices (not a wadi, not a lake) becomes a line along its
+/// water surface, with the share of a pixel its channel covers at each end for the line's
+/// opacity: its width over the pixel's footprint there (`pixel_per_m` metres a pixel spans
+/// per metre from `eye`), at most 1. Renders draw them one pixel wide (`render/scene.rs`),
+/// `view.glb` as a LINES primitive.
+pub fn river_lines(mesh: &Mesh, eye: DVec3, pixel_per_m: f64) -> Vec<[LineEnd; 2]> {
+    let end = |v: u32| -> Option<LineEnd> {
+        let vert = &mesh.vertices[v as usize];
+        let width = channel_width(mesh, vert).filter(|&w| w > 0.0)?;
+        let up = vert.p().normalize_or(DVec3::Z);
+        let position = vert.p() + up * (vert.water - vert.ground).max(0.0);
+        let footprint = (position - eye).length() * pixel_per_m;
+        let depth_m = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
+        Some(LineEnd { vertex: v, position, up, coverage: (width / footprint.max(1e-9)).min(1.0), depth_m })
+    };
+    mesh.edges
+        .par_iter()
+        .filter(|e| e.kind == EdgeKind::River)
+        .filter_map(|e| Some([end(e.v[0])?, end(e.v[1])?]))
+        .collect()
+}
 
 /// Whether any corner of triangle `t` stands under water (its ground below its water
 /// altitude): the faces whose water [`water_levels`] looks at.

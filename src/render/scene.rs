@@ -86,37 +86,23 @@ pub struct Scene {
     pub frame: FrameUniforms,
 }
 
-/// Rivers narrower than a pixel as lines, so that they stay visible at their true width: each
-/// river edge between two channelled vertices (not a wadi, not a lake) becomes a one-pixel line
-/// along its water surface whose opacity follows the share of the pixel the channel covers (its
-/// width over the pixel's footprint at that distance; the square root of it, so that the eye
-/// sees a river covering a tenth of its pixels at a third, as a map draws it). A river whose
+/// Rivers narrower than a pixel as lines ([`crate::export::water::river_lines`]), one pixel
+/// wide, as opaque as the square root of the share of the pixel the channel covers (so that the
+/// eye sees a river covering a tenth of its pixels at a third, as a map draws it). A river whose
 /// channel spans a pixel or more is drawn by its water surface too, where the mesh resolves it,
 /// and by an opaque line where not.
 pub fn river_lines(mesh: &Mesh, cam: &Camera) -> Vec<LineVertex> {
     let eye = cam.eye;
     // Metres a pixel spans per metre of distance.
     let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
-    let end = |v: u32| -> Option<LineVertex> {
-        let vert = &mesh.vertices[v as usize];
-        let width = crate::export::water::channel_width(mesh, vert).filter(|&w| w > 0.0)?;
-        let up = vert.p().normalize_or(DVec3::Z);
-        let p = vert.p() + up * (vert.water - vert.ground).max(0.0);
-        let footprint = (p - eye).length() * pixel_per_m;
-        let depth = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
-        Some(LineVertex {
-            position: (p - eye).as_vec3().to_array(),
-            coverage: (width / footprint.max(1e-9)).min(1.0).sqrt() as f32,
-            up: up.as_vec3().to_array(),
-            depth_m: depth as f32,
-        })
-    };
-    mesh.edges
-        .par_iter()
-        .filter(|e| e.kind == crate::mesh::EdgeKind::River)
-        .flat_map_iter(|e| match (end(e.v[0]), end(e.v[1])) {
-            (Some(a), Some(b)) => vec![a, b],
-            _ => Vec::new(),
+    crate::export::water::river_lines(mesh, eye, pixel_per_m)
+        .into_iter()
+        .flatten()
+        .map(|end| LineVertex {
+            position: (end.position - eye).as_vec3().to_array(),
+            coverage: end.coverage.sqrt() as f32,
+            up: end.up.as_vec3().to_array(),
+            depth_m: end.depth_m as f32,
         })
         .collect()
 }

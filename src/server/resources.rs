@@ -204,7 +204,7 @@ fn render(
             let mut adapter = Adapter::new(mesh.clone(), params.clone()).with_gpu(gpu);
             adapter.adapt(cam, Some(budget));
             let origin = export::view::local_origin(cam.eye, params.radius_m);
-            export::view::view_glb(adapter.mesh(), params, origin, *compression)
+            export::view::view_glb(adapter.mesh(), params, cam, origin, *compression)
                 .map_err(|e| ApiError::unprocessable("too_large", "max_faces", format!("{e}: ask for fewer faces")))?
         }
         (_, Job::Rivers) => export::rivers_geojson(planet, params).into_bytes(),
@@ -226,9 +226,9 @@ fn render(
 /// and 3D Tiles contents quantized and meshopt-compressed by default, their vertex colours
 /// linear as glTF defines them; 9-11: landform detail, the map's roughness, Earth's snow line;
 /// 12: ground colours by the climate's moisture; 13: coarse 3D Tiles levels' colours are
-/// means of the fine surface), so
+/// means of the fine surface; 14: rivers as lines in view.glb), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "13";
+pub const ANSWERS_REVISION: &str = "14";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.
