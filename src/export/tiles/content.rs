@@ -114,9 +114,113 @@ pub fn tile_content(
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
     let mut water = water_mesh(&surface, origin, &triangles, &levels);
     water.translation = None;
-    // A tile holds 1,024 triangles (plus skirts and water): far below the container's limit.
-    let glb = encode_glb(&[terrain, water], compression).expect("a tile fits a .glb");
+    let rivers = river_lines(refiner, cell, spec, (&surface, &ids, &levels), origin);
+    // A tile holds 1,024 triangles (plus skirts, water and rivers): far below the container's
+    // limit.
+    let glb = encode_glb(&[terrain, water, rivers], compression).expect("a tile fits a .glb");
     TileContent { glb, bounds, surface, normals, splits: refiner.splits() }
+}
+
+/// Pixels a tile's geometric error (its nominal edge) spans where a client shows it: clients
+/// refine a tile once its error passes their screen-space error target (our viewer's 6 pixels,
+/// CesiumJS's 16), so it is drawn with the error between about that and half of it.
+pub const PIXELS_PER_EDGE: f64 = 4.0;
+
+/// Least share of its nominal pixel a river's channel covers for a tile to carry it as a line
+/// (drawn at a tenth of full opacity).
+pub const MIN_TILE_LINE_COVERAGE: f64 = 0.01;
+
+/// The perennial rivers inside the cell as lines, like `view.glb`'s
+/// ([`crate::export::view::river_lines_mesh`]): the river edges of the refined mesh with both
+/// ends in the cell (the base mesh's above its resolution, the refined ones below), each end
+/// laid on the tile's own surface (the plane of the leaf holding it through its corners at
+/// their ground or water level, lifted by a hundredth of an edge so the line stays above the
+/// triangles it crosses), as opaque as the square root of the share of a pixel the channel covers at the
+/// level's nominal pixel (its edge over [`PIXELS_PER_EDGE`]). Segments under
+/// [`MIN_TILE_LINE_COVERAGE`] at both ends are left out, so a level carries the rivers it can
+/// show (at level 0 those wider than ~800 m) and tiles stay small; positions relative to
+/// `origin`.
+fn river_lines(
+    refiner: &mut Refiner,
+    cell: [u32; 3],
+    spec: &ContentSpec,
+    (surface, ids, levels): (&Mesh, &[u32], &[f64]),
+    origin: DVec3,
+) -> GlbMesh {
+    use crate::export::climate::water_colour;
+    use crate::export::glb::linear_rgba;
+    let pixel = 2.0 * spec.footprint_m / PIXELS_PER_EDGE;
+    let raise = 0.02 * spec.footprint_m;
+    let mesh = refiner.mesh();
+    let dir = |v: u32| mesh.pos(v).normalize();
+    let inside = |node: [u32; 3], p: DVec3| {
+        let [a, b, c] = node.map(dir);
+        a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
+    };
+    // River vertices of the cell with their channel's width, found on the mesh as it is now.
+    let candidates: Vec<(u32, u32)> = mesh
+        .edges
+        .iter()
+        .filter(|e| e.kind == crate::mesh::EdgeKind::River)
+        .map(|e| (e.v[0], e.v[1]))
+        .filter(|&(a, b)| inside(cell, dir(a)) && inside(cell, dir(b)))
+        .collect();
+    let slot: HashMap<u32, usize> = ids.iter().enumerate().map(|(i, &v)| (v, i)).collect();
+    let visible = |i: usize| levels[i].max(surface.vertices[i].ground);
+    let mut ends: HashMap<u32, u32> = HashMap::new();
+    let mut out = GlbMesh { lines: true, ..Default::default() };
+    for (a, b) in candidates {
+        let end = |v: u32, refiner: &Refiner| {
+            let m = refiner.mesh();
+            let vert = &m.vertices[v as usize];
+            let width = crate::export::water::channel_width(m, vert).filter(|&w| w > 0.0)?;
+            let depth = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
+            Some(((width / pixel).min(1.0), depth))
+        };
+        let (Some(ea), Some(eb)) = (end(a, refiner), end(b, refiner)) else { continue };
+        if ea.0 < MIN_TILE_LINE_COVERAGE && eb.0 < MIN_TILE_LINE_COVERAGE {
+            continue;
+        }
+        for (v, (coverage, depth)) in [(a, ea), (b, eb)] {
+            let index = match ends.get(&v) {
+                Some(&i) => i,
+                None => {
+                    // The leaf holding the vertex, and the tile's surface there.
+                    let p = refiner.mesh().pos(v).normalize();
+                    let mut node = cell;
+                    for _ in 0..spec.content_depth {
+                        let [c0, c1] = refiner.children(node);
+                        let m = refiner.mesh();
+                        let [x, y, z] = c0.map(|u| m.pos(u).normalize());
+                        node = if x.cross(y).dot(p) >= 0.0 && y.cross(z).dot(p) >= 0.0 && z.cross(x).dot(p) >= 0.0 {
+                            c0
+                        } else {
+                            c1
+                        };
+                    }
+                    // On the leaf's plane through its corners at their ground or water level
+                    // (the surface the tile draws there), lifted.
+                    let m = refiner.mesh();
+                    let [x, y, z] = node.map(|u| {
+                        let level = slot.get(&u).map_or(m.vertices[u as usize].ground, |&i| visible(i));
+                        lift(m.pos(u), m.radius, level)
+                    });
+                    let n = (y - x).cross(z - x);
+                    let at = p * (x.dot(n) / p.dot(n)) + p * raise - origin;
+                    out.positions.push(to_gltf_axes(at.to_array()).map(|c| c as f32));
+                    out.colors.push(linear_rgba(
+                        water_colour(depth),
+                        (coverage.sqrt() * 255.0).round().clamp(1.0, 255.0) as u8,
+                    ));
+                    let i = out.positions.len() as u32 - 1;
+                    ends.insert(v, i);
+                    i
+                }
+            };
+            out.indices.push(index);
+        }
+    }
+    out
 }
 
 /// The leaves as a mesh of their own (vertices in order of first use, faces in leaf order,

@@ -443,3 +443,64 @@ fn coarse_levels_show_the_mean_colour_of_the_fine_ones() {
     }
     println!("largest channel difference (sRGB 0-255), level / means / points: {report:?}");
 }
+
+/// Tiles carry the perennial rivers as lines laid on their own surface: the Earth DEM's level-0
+/// tile over South America holds the great rivers (channels over ~800 m at its ~80 km pixel,
+/// drawn at 10-20 % opacity, as a render from that far draws them), and every line end lies
+/// above the tile's terrain by at most a fiftieth of an edge (on it, not under it).
+#[test]
+fn tiles_carry_their_rivers_as_lines_on_their_surface() {
+    let Some(planet) = crate::planet::tests_relief::earth() else { return };
+    let tiles = PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
+    // The root cell holding the Amazon's mouth (0°, 50°W).
+    let amazon = crate::geo::direction(-2.0, -55.0);
+    let root = (0..8u8)
+        .find(|&r| {
+            let mut refiner = tiles.refiner();
+            let (cell, _) = content::cell_frame(&mut refiner, TileKey::root(r));
+            let [a, b, c] = cell.map(|v| refiner.mesh().pos(v).normalize());
+            a.cross(b).dot(amazon) >= 0.0 && b.cross(c).dot(amazon) >= 0.0 && c.cross(a).dot(amazon) >= 0.0
+        })
+        .unwrap();
+    let content = tiles.content(TileKey::root(root), Compression::None);
+    let (json, bin) = glb_chunks(&content.glb);
+    let meshes = json["meshes"].as_array().unwrap();
+    let lines = meshes.iter().position(|m| m["primitives"][0]["mode"] == 1).expect("a LINES primitive");
+    let prim = &json["meshes"][lines]["primitives"][0];
+    let acc = |i: &Value| &json["accessors"][i.as_u64().unwrap() as usize];
+    let colours = acc(&prim["attributes"]["COLOR_0"]);
+    let view = &json["bufferViews"][colours["bufferView"].as_u64().unwrap() as usize];
+    let start = view["byteOffset"].as_u64().unwrap_or(0) as usize;
+    let alphas: Vec<u8> = (0..colours["count"].as_u64().unwrap() as usize).map(|i| bin[start + 4 * i + 3]).collect();
+    // At least a tenth opaque (a channel over a hundredth of the pixel) at one end at least.
+    let seen = alphas.iter().filter(|&&a| a >= 25).count();
+    assert!(alphas.len() > 20 && seen * 3 >= alphas.len(), "{} line ends: {alphas:?}", alphas.len());
+    // Line ends against the terrain below them: the tile's surface, the same leaf search.
+    let positions = {
+        let a = acc(&prim["attributes"]["POSITION"]);
+        let v = &json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+        let s = v["byteOffset"].as_u64().unwrap_or(0) as usize;
+        (0..a["count"].as_u64().unwrap() as usize)
+            .map(|i| {
+                let f =
+                    |k: usize| f32::from_le_bytes(bin[s + 12 * i + 4 * k..s + 12 * i + 4 * k + 4].try_into().unwrap());
+                y_up_to_z_up(DVec3::new(f(0).into(), f(1).into(), f(2).into())) + content.origin()
+            })
+            .collect::<Vec<_>>()
+    };
+    let edge = tiles.edge_length(0);
+    let surface = &content.surface;
+    for p in positions.iter().step_by(17) {
+        let d = p.normalize();
+        // The terrain's height below the line end: the surface triangle the direction meets.
+        let below = surface.triangles().into_iter().find_map(|t| {
+            let [a, b, c] = t.map(|v| surface.pos(v));
+            let n = (b - a).cross(c - a);
+            let inside = [(a, b), (b, c), (c, a)].iter().all(|(x, y)| x.cross(*y).dot(d) >= 0.0);
+            inside.then(|| d * (a.dot(n) / d.dot(n)))
+        });
+        let Some(below) = below else { continue };
+        let above = p.length() - below.length();
+        assert!(above > -1.0 && above < 0.02 * edge, "a line end {above:.0} m above the terrain");
+    }
+}
