@@ -47,7 +47,7 @@
 
 use crate::mesh::Mesh;
 use crate::params::{Climate, Params, Preset};
-use crate::planet::climate::{potential_evaporation_mm, temperature_c, zonal_mm};
+use crate::planet::climate::{potential_evaporation_mm, smoothstep, temperature_c, zonal_mm};
 
 type Rgb = [f64; 3];
 
@@ -140,11 +140,6 @@ fn vegetation(lat: f64, altitude_m: f64, precip_mm: f64) -> Rgb {
 fn mix(a: Rgb, b: Rgb, t: f64) -> Rgb {
     let t = t.clamp(0.0, 1.0);
     [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
-}
-
-fn smoothstep(lo: f64, hi: f64, x: f64) -> f64 {
-    let t = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
 }
 
 fn to_u8(c: Rgb) -> [u8; 3] {

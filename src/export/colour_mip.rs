@@ -112,17 +112,18 @@ impl ColourMip {
         ColourMip { radius: base.radius, samples: Buckets::new(spacing, items) }
     }
 
-    /// The colour (sRGB) of a vertex at `p` (planet frame) whose own colour is `own`, standing for
+    /// The colour (linear RGBA, as glTF's `COLOR_0`) of a vertex at `p` (planet frame) whose own
+    /// colour is `own` (linear RGBA, [`linear_rgba`] of its sRGB colour), standing for
     /// the ground within `r` metres: the weighted mean, in linear light, of the samples within
     /// `r` and of `own` over the rest of the disc (see the module's doc).
-    pub fn mean(&self, p: DVec3, r: f64, own: [u8; 3]) -> [u8; 4] {
-        let own_lin = linear(own).map(|c| f64::from(c) / 255.0);
+    pub fn mean(&self, p: DVec3, r: f64, own: [u8; 4]) -> [u8; 4] {
+        let own_lin = [0, 1, 2].map(|i| f64::from(own[i]) / 255.0);
         let dir = p.normalize();
         let ang = (r / self.radius).min(std::f64::consts::PI);
         // The disc's area on the sphere (a spherical cap).
         let disc = 2.0 * std::f64::consts::PI * self.radius * self.radius * (1.0 - ang.cos());
         if disc.is_nan() || disc <= 0.0 || !dir.is_finite() {
-            return linear_rgba(own, 255);
+            return [own[0], own[1], own[2], 255];
         }
         let max_chord = (2.0 * (ang * 0.5).sin()) as f32;
         let d = [dir.x as f32, dir.y as f32, dir.z as f32];
@@ -177,11 +178,12 @@ mod tests {
         let params = Params::default();
         let mip = ColourMip::new(&planet.mesh, &params);
         let v = planet.mesh.vertices.iter().position(|v| v.flags.contains(VertexFlags::CONTINENT)).unwrap();
-        let own = vertex_colour(&planet.mesh, &params, v);
+        let own = linear_rgba(vertex_colour(&planet.mesh, &params, v), 255);
         let p = planet.mesh.pos(v as u32);
         // A footprint no wider than the base mesh's vertices keeps the own colour, whatever it is.
         for r in [0.0, 1.0, 1e3] {
-            assert_eq!(mip.mean(p, r, [255, 0, 0]), linear_rgba([255, 0, 0], 255), "{r} m");
+            let red = linear_rgba([255, 0, 0], 255);
+            assert_eq!(mip.mean(p, r, red), red, "{r} m");
         }
         // A footprint the size of the planet: the area-weighted mean of every sample, the own
         // colour filling only what the coarse test planet's samples, a few hundred km wide,
@@ -195,8 +197,8 @@ mod tests {
             }
         }
         let expected = sum.map(|x| x / area * 255.0);
-        let red = mip.mean(p, whole, [255, 0, 0]);
-        let blue = mip.mean(-p, whole, [0, 0, 255]);
+        let red = mip.mean(p, whole, linear_rgba([255, 0, 0], 255));
+        let blue = mip.mean(-p, whole, linear_rgba([0, 0, 255], 255));
         for (got, own) in [(red, 0), (blue, 2)] {
             for i in 0..3 {
                 let tol = if i == own { 8.0 } else { 2.5 };

@@ -52,11 +52,10 @@ pub fn view_glb(
 /// of kilometres) are left out, for smaller files. glTF lines are one pixel wide in the
 /// clients that draw them.
 pub fn river_lines_mesh(mesh: &Mesh, cam: &Camera, origin: DVec3) -> GlbMesh {
-    let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
     let mut slot = std::collections::HashMap::new();
     let mut ends = Vec::new();
     let mut indices = Vec::new();
-    for segment in river_lines(mesh, cam.eye, pixel_per_m) {
+    for segment in river_lines(mesh, cam) {
         if segment.iter().all(|e| e.coverage < MIN_LINE_COVERAGE) {
             continue;
         }
@@ -71,14 +70,17 @@ pub fn river_lines_mesh(mesh: &Mesh, cam: &Camera, origin: DVec3) -> GlbMesh {
     GlbMesh {
         positions: ends.iter().map(|e| to_gltf_axes((e.position - origin).to_array()).map(|x| x as f32)).collect(),
         normals: Vec::new(),
-        colors: ends
-            .iter()
-            .map(|e| linear_rgba(water_colour(e.depth_m), (e.coverage.sqrt() * 255.0).round().clamp(1.0, 255.0) as u8))
-            .collect(),
+        colors: ends.iter().map(|e| line_colour(e.coverage, e.depth_m)).collect(),
         indices,
         lines: true,
         translation: Some(to_gltf_axes(origin.to_array())),
     }
+}
+
+/// The colour of a river line's end (linear RGBA): water of the channel's depth, as opaque as
+/// the square root of the share of a pixel the channel covers, at least 1/255.
+pub fn line_colour(coverage: f64, depth_m: f64) -> [u8; 4] {
+    linear_rgba(water_colour(depth_m), (coverage.sqrt() * 255.0).round().clamp(1.0, 255.0) as u8)
 }
 
 /// Least share of a pixel a river's channel covers for [`river_lines_mesh`] to draw it.

@@ -30,20 +30,28 @@ pub struct LineEnd {
     pub depth_m: f64,
 }
 
+/// Width and depth (m) of the flowing channel at vertex `v`: `None` off rivers, for lakes and
+/// for rivers that do not flow all year (a dry bed).
+pub fn flowing_channel(mesh: &Mesh, v: u32) -> Option<(f64, f64)> {
+    let width = channel_width(mesh, &mesh.vertices[v as usize]).filter(|&w| w > 0.0)?;
+    Some((width, crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width))))
+}
+
 /// Rivers narrower than a pixel as lines, so that they stay visible at their true width: each
-/// river edge between two channelled vertices (not a wadi, not a lake) becomes a line along its
-/// water surface, with the share of a pixel its channel covers at each end for the line's
-/// opacity: its width over the pixel's footprint there (`pixel_per_m` metres a pixel spans
-/// per metre from `eye`), at most 1. Renders draw them one pixel wide (`render/scene.rs`),
-/// `view.glb` as a LINES primitive.
-pub fn river_lines(mesh: &Mesh, eye: DVec3, pixel_per_m: f64) -> Vec<[LineEnd; 2]> {
+/// river edge between two channelled vertices ([`flowing_channel`]) becomes a line along its
+/// water surface, with the share of one of `cam`'s pixels its channel covers at each end for
+/// the line's opacity: its width over the pixel's footprint there, at most 1. Renders draw
+/// them one pixel wide (`render/scene.rs`), `view.glb` as a LINES primitive.
+pub fn river_lines(mesh: &Mesh, cam: &crate::adapt::Camera) -> Vec<[LineEnd; 2]> {
+    let eye = cam.eye;
+    // Metres a pixel spans per metre of distance.
+    let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
     let end = |v: u32| -> Option<LineEnd> {
+        let (width, depth_m) = flowing_channel(mesh, v)?;
         let vert = &mesh.vertices[v as usize];
-        let width = channel_width(mesh, vert).filter(|&w| w > 0.0)?;
         let up = vert.p().normalize_or(DVec3::Z);
         let position = vert.p() + up * (vert.water - vert.ground).max(0.0);
         let footprint = (position - eye).length() * pixel_per_m;
-        let depth_m = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
         Some(LineEnd { vertex: v, position, up, coverage: (width / footprint.max(1e-9)).min(1.0), depth_m })
     };
     mesh.edges

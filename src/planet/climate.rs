@@ -159,7 +159,8 @@ fn extratropical(lat: f64) -> f64 {
     smoothstep(10.0, 20.0, lat.abs())
 }
 
-fn smoothstep(lo: f64, hi: f64, x: f64) -> f64 {
+/// Hermite step from 0 at `lo` to 1 at `hi`.
+pub(crate) fn smoothstep(lo: f64, hi: f64, x: f64) -> f64 {
     let t = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }

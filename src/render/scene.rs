@@ -93,9 +93,7 @@ pub struct Scene {
 /// and by an opaque line where not.
 pub fn river_lines(mesh: &Mesh, cam: &Camera) -> Vec<LineVertex> {
     let eye = cam.eye;
-    // Metres a pixel spans per metre of distance.
-    let pixel_per_m = 2.0 * (cam.fov_deg.to_radians() * 0.5).tan() / f64::from(cam.height);
-    crate::export::water::river_lines(mesh, eye, pixel_per_m)
+    crate::export::water::river_lines(mesh, cam)
         .into_iter()
         .flatten()
         .map(|end| LineVertex {

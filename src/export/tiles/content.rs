@@ -12,7 +12,6 @@ use super::bounds::{local_axes, OrientedBox};
 use super::key::TileKey;
 use super::ring::border_normals;
 use super::tree::{Refiner, ROOTS};
-use crate::export::climate::vertex_colour;
 use crate::export::colour_mip::ColourMip;
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
 use crate::export::view::water_mesh;
@@ -107,9 +106,9 @@ pub fn tile_content(
     let mut terrain = terrain_mesh_with_normals(&surface, params, Some(origin), &triangles, &normals);
     terrain.translation = None;
     if let Some(mip) = colours {
-        terrain.colors = (0..surface.vertices.len())
-            .map(|v| mip.mean(surface.vertices[v].p(), spec.footprint_m, vertex_colour(&surface, params, v)))
-            .collect();
+        for (c, v) in terrain.colors.iter_mut().zip(&surface.vertices) {
+            *c = mip.mean(v.p(), spec.footprint_m, *c);
+        }
     }
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
     let mut water = water_mesh(&surface, origin, &triangles, &levels);
@@ -147,23 +146,20 @@ fn river_lines(
     (surface, ids, levels): (&Mesh, &[u32], &[f64]),
     origin: DVec3,
 ) -> GlbMesh {
-    use crate::export::climate::water_colour;
-    use crate::export::glb::linear_rgba;
+    use crate::export::view::line_colour;
+    use crate::export::water::flowing_channel;
     let pixel = 2.0 * spec.footprint_m / PIXELS_PER_EDGE;
     let raise = 0.02 * spec.footprint_m;
     let mesh = refiner.mesh();
     let dir = |v: u32| mesh.pos(v).normalize();
-    let inside = |node: [u32; 3], p: DVec3| {
-        let [a, b, c] = node.map(dir);
-        a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
-    };
-    // River vertices of the cell with their channel's width, found on the mesh as it is now.
+    let corners = cell.map(dir);
+    // The river edges of the cell, found on the mesh as it is now.
     let candidates: Vec<(u32, u32)> = mesh
         .edges
         .iter()
         .filter(|e| e.kind == crate::mesh::EdgeKind::River)
         .map(|e| (e.v[0], e.v[1]))
-        .filter(|&(a, b)| inside(cell, dir(a)) && inside(cell, dir(b)))
+        .filter(|&(a, b)| holds(corners, dir(a)) && holds(corners, dir(b)))
         .collect();
     let slot: HashMap<u32, usize> = ids.iter().enumerate().map(|(i, &v)| (v, i)).collect();
     let visible = |i: usize| levels[i].max(surface.vertices[i].ground);
@@ -171,10 +167,7 @@ fn river_lines(
     let mut out = GlbMesh { lines: true, ..Default::default() };
     for (a, b) in candidates {
         let end = |v: u32, refiner: &Refiner| {
-            let m = refiner.mesh();
-            let vert = &m.vertices[v as usize];
-            let width = crate::export::water::channel_width(m, vert).filter(|&w| w > 0.0)?;
-            let depth = crate::planet::network::channel_depth_m(crate::planet::network::discharge_of_width(width));
+            let (width, depth) = flowing_channel(refiner.mesh(), v)?;
             Some(((width / pixel).min(1.0), depth))
         };
         let (Some(ea), Some(eb)) = (end(a, refiner), end(b, refiner)) else { continue };
@@ -191,12 +184,7 @@ fn river_lines(
                     for _ in 0..spec.content_depth {
                         let [c0, c1] = refiner.children(node);
                         let m = refiner.mesh();
-                        let [x, y, z] = c0.map(|u| m.pos(u).normalize());
-                        node = if x.cross(y).dot(p) >= 0.0 && y.cross(z).dot(p) >= 0.0 && z.cross(x).dot(p) >= 0.0 {
-                            c0
-                        } else {
-                            c1
-                        };
+                        node = if holds(c0.map(|u| m.pos(u).normalize()), p) { c0 } else { c1 };
                     }
                     // On the leaf's plane through its corners at their ground or water level
                     // (the surface the tile draws there), lifted.
@@ -208,10 +196,7 @@ fn river_lines(
                     let n = (y - x).cross(z - x);
                     let at = p * (x.dot(n) / p.dot(n)) + p * raise - origin;
                     out.positions.push(to_gltf_axes(at.to_array()).map(|c| c as f32));
-                    out.colors.push(linear_rgba(
-                        water_colour(depth),
-                        (coverage.sqrt() * 255.0).round().clamp(1.0, 255.0) as u8,
-                    ));
+                    out.colors.push(line_colour(coverage, depth));
                     let i = out.positions.len() as u32 - 1;
                     ends.insert(v, i);
                     i
@@ -221,6 +206,13 @@ fn river_lines(
         }
     }
     out
+}
+
+/// Whether the spherical triangle of unit `corners` (counter-clockwise seen from outside) holds
+/// unit direction `p`, its sides included.
+pub(super) fn holds(corners: [DVec3; 3], p: DVec3) -> bool {
+    let [a, b, c] = corners;
+    a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
 }
 
 /// The leaves as a mesh of their own (vertices in order of first use, faces in leaf order,

@@ -458,8 +458,7 @@ fn tiles_carry_their_rivers_as_lines_on_their_surface() {
         .find(|&r| {
             let mut refiner = tiles.refiner();
             let (cell, _) = content::cell_frame(&mut refiner, TileKey::root(r));
-            let [a, b, c] = cell.map(|v| refiner.mesh().pos(v).normalize());
-            a.cross(b).dot(amazon) >= 0.0 && b.cross(c).dot(amazon) >= 0.0 && c.cross(a).dot(amazon) >= 0.0
+            content::holds(cell.map(|v| refiner.mesh().pos(v).normalize()), amazon)
         })
         .unwrap();
     let content = tiles.content(TileKey::root(root), Compression::None);
