@@ -23,7 +23,7 @@
 
 use super::cog::{write_cog, CogRaster};
 use super::tiles::{PlanetTiles, Refiner, ROOTS};
-use crate::geo::{direction, lat_lon};
+use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
 use glam::DVec3;
@@ -84,16 +84,47 @@ impl DemRequest {
 
     /// The fractional row whose centre lies at latitude `lat` (the inverse of [`Self::lat_of`]).
     pub fn row_of(&self, lat: f64) -> f64 {
+        self.row_map().row(lat)
+    }
+
+    /// [`Self::row_of`] with the bounds' projection computed once, for many latitudes.
+    fn row_map(&self) -> RowMap {
         let b = &self.bounds;
-        let h = f64::from(self.height);
+        let (n, s) = match self.rows {
+            Rows::Degrees => (b.north, b.south),
+            Rows::Mercator => (mercator_y(b.north), mercator_y(b.south)),
+        };
+        RowMap { rows: self.rows, n, per: f64::from(self.height) / (n - s) }
+    }
+}
+
+/// Latitude to fractional row of one request: its top and rows per unit of its projection.
+struct RowMap {
+    rows: Rows,
+    n: f64,
+    per: f64,
+}
+
+impl RowMap {
+    /// The fractional row of latitude `lat`.
+    #[inline]
+    fn row(&self, lat: f64) -> f64 {
+        self.row_at(self.project(lat))
+    }
+
+    /// A latitude in the rows' coordinate: degrees, or Mercator `y`.
+    #[inline]
+    fn project(&self, lat: f64) -> f64 {
         match self.rows {
-            Rows::Degrees => (b.north - lat) / (b.north - b.south) * h - 0.5,
-            Rows::Mercator => {
-                let (n, s) = (mercator_y(b.north), mercator_y(b.south));
-                let lat = lat.clamp(-89.999_999, 89.999_999);
-                (n - mercator_y(lat)) / (n - s) * h - 0.5
-            }
+            Rows::Degrees => lat,
+            Rows::Mercator => mercator_y(lat.clamp(-89.999_999, 89.999_999)),
         }
+    }
+
+    /// The fractional row of a projected latitude.
+    #[inline]
+    fn row_at(&self, y: f64) -> f64 {
+        (self.n - y) * self.per - 0.5
     }
 }
 
@@ -273,7 +304,6 @@ impl<'a> Surface<'a> {
     fn refine(tiles: &'a PlanetTiles, rect: GeoBounds, cell: [f64; 2], rows: Rows) -> Surface<'a> {
         let [dx, dy] = cell;
         let params = tiles.params();
-        let tree = tiles.tree();
         let r = params.radius_m;
         let region = Region::new(rect);
         let mut refiner = tiles.refiner();
@@ -296,7 +326,7 @@ impl<'a> Surface<'a> {
                 Rows::Mercator => ew, // square cells
             };
             let target = ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m);
-            if !tree.splits_edge(node[1], node[2]) && u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target {
+            if u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target && !refiner.base_splits(node) {
                 continue;
             }
             stack.extend(refiner.children(node));
@@ -338,9 +368,14 @@ impl<'a> Surface<'a> {
         let mut ground = vec![f32::NAN; n];
         let mut water = vec![f32::NAN; n];
         let mut owned = vec![false; n];
-        let lats: Vec<f64> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i))).collect();
-        let lons: Vec<f64> = (0..cols).map(|i| b.lon_of(col0 + i, req.width)).collect();
-        let dirs: Vec<DVec3> = lats.iter().flat_map(|&la| lons.iter().map(move |&lo| direction(la, lo))).collect();
+        // Cell directions from each row's and each column's sines and cosines.
+        let lats: Vec<(f64, f64)> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i)).to_radians().sin_cos()).collect();
+        let lons: Vec<(f64, f64)> = (0..cols).map(|i| b.lon_of(col0 + i, req.width).to_radians().sin_cos()).collect();
+        let dirs: Vec<DVec3> = lats
+            .iter()
+            .flat_map(|&(sa, ca)| lons.iter().map(move |&(so, co)| DVec3::new(ca * co, ca * so, sa)))
+            .collect();
+        let row_map = req.row_map();
         // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
         let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
             let wgt = weights(n, dirs[i]);
@@ -358,55 +393,71 @@ impl<'a> Surface<'a> {
             }
             ((g - sea) as f32, water)
         };
-        // Latitude and longitude of each vertex, computed once.
-        let mut lat_lons = vec![(f64::NAN, f64::NAN); mesh.vertices.len()];
-        let mut lat_lon_of = |v: u32| {
-            let slot = &mut lat_lons[v as usize];
-            if slot.0.is_nan() {
-                *slot = lat_lon(mesh.pos(v));
+        // Latitude, longitude and projected latitude (the rows' coordinate) of each vertex,
+        // computed once.
+        let mut corners = vec![[f64::NAN; 3]; mesh.vertices.len()];
+        let mut corner = |v: u32| {
+            let slot = &mut corners[v as usize];
+            if slot[0].is_nan() {
+                let (lat, lon) = lat_lon(mesh.pos(v));
+                *slot = [lat, lon, row_map.project(lat)];
             }
             *slot
         };
         const EPS: f64 = 1e-7;
+        // The window's own rectangle: the surface may be refined over more (a margin).
+        let region = Region::new(rect);
         for leaf in leaves {
             let p = leaf.map(|v| mesh.pos(v));
-            let n = [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])];
             let u = p.map(DVec3::normalize);
+            if !region.may_meet(&u) {
+                continue;
+            }
+            let n = [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])];
             let size = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
-            let ll = leaf.map(&mut lat_lon_of);
-            let (lo, hi, lon) = if size < 0.01 && ll.iter().all(|x| x.0.abs() < 89.0) {
+            let ll = leaf.map(&mut corner);
+            let (r0, r1, lon) = if size < 0.01 && ll.iter().all(|x| x[0].abs() < 89.0) {
                 // A small face away from the poles: its corners' ranges, widened by how far an
                 // edge's great circle bulges poleward (under (L^2 / 8) tan(lat) for an arc of L
-                // radians).
-                let polar = ll.iter().map(|x| x.0.abs()).fold(0.0, f64::max).to_radians();
-                let bulge = (size * size / 8.0 * (1.0 + polar.tan())).to_degrees();
-                let la = ll[0].1;
-                let (lb, lc) = (la + wrap180(ll[1].1 - la), la + wrap180(ll[2].1 - la));
-                let lats = ll.map(|x| x.0);
-                let (lo, hi) = (lats[0].min(lats[1]).min(lats[2]), lats[0].max(lats[1]).max(lats[2]));
-                (lo - bulge, hi + bulge, Some((la.min(lb).min(lc), la.max(lb).max(lc))))
+                // radians); in Mercator rows by the bulge times the secant poleward of it
+                // (cos(lat + b) >= cos(lat) - b).
+                let polar = u.iter().max_by(|a, b| a.z.abs().total_cmp(&b.z.abs())).expect("three corners");
+                let cos = polar.x.hypot(polar.y);
+                let bulge = size * size / 8.0 * (1.0 + polar.z.abs() / cos);
+                let bulge = match req.rows {
+                    Rows::Degrees => bulge.to_degrees(),
+                    Rows::Mercator => bulge / (cos - bulge).max(1e-9),
+                };
+                let la = ll[0][1];
+                let (lb, lc) = (la + wrap180(ll[1][1] - la), la + wrap180(ll[2][1] - la));
+                let ys = ll.map(|x| x[2]);
+                let (lo, hi) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+                let rows = (row_map.row_at(hi + bulge + EPS), row_map.row_at(lo - bulge - EPS));
+                (rows.0, rows.1, Some((la.min(lb).min(lc), la.max(lb).max(lc))))
             } else {
-                triangle_bounds(u, &n)
+                let (lo, hi, lon) = triangle_bounds(u, &n);
+                (row_map.row(hi + EPS), row_map.row(lo - EPS), lon)
             };
-            let r0 = ((req.row_of(hi + EPS) - f64::from(row0)).ceil().max(0.0)) as u32;
-            let r1 = (req.row_of(lo - EPS) - f64::from(row0)).floor();
+            let r0 = ((r0 - f64::from(row0)).ceil().max(0.0)) as u32;
+            let r1 = (r1 - f64::from(row0)).floor();
             if r1 < f64::from(r0) {
                 continue;
             }
             let r1 = (r1 as u32).min(rows - 1);
-            let ranges: Vec<(u32, u32)> = match lon {
-                None => vec![(0, cols - 1)],
-                Some((a, z)) => [0.0, -360.0, 360.0]
-                    .iter()
-                    .filter_map(|turn| {
+            let mut ranges = [None; 3];
+            match lon {
+                None => ranges[0] = Some((0, cols - 1)),
+                Some((a, z)) => {
+                    for (slot, turn) in ranges.iter_mut().zip([0.0, -360.0, 360.0]) {
                         let c0 = ((a + turn - EPS - rect.west) / dx - 0.5).ceil().max(0.0);
                         let c1 = ((z + turn + EPS - rect.west) / dx - 0.5).floor().min(f64::from(cols) - 1.0);
-                        (c1 >= c0).then_some((c0 as u32, c1 as u32))
-                    })
-                    .collect(),
-            };
+                        *slot = (c1 >= c0).then_some((c0 as u32, c1 as u32));
+                    }
+                }
+            }
+            let ranges = ranges.into_iter().flatten();
             for row in r0..=r1 {
-                for &(c0, c1) in &ranges {
+                for (c0, c1) in ranges.clone() {
                     for col in c0..=c1 {
                         let i = (row * cols + col) as usize;
                         if !owned[i] && inside(&n, dirs[i]) {

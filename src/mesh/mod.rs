@@ -120,18 +120,6 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// Makes this mesh a copy of `other`, reusing this one's buffers (no allocation, and no
-    /// fresh pages to fault in, once they are large enough).
-    pub fn copy_from(&mut self, other: &Mesh) {
-        self.radius = other.radius;
-        self.vertices.clone_from(&other.vertices);
-        self.edges.clone_from(&other.edges);
-        self.faces.clone_from(&other.faces);
-        self.guide.clone_from(&other.guide);
-        self.channels.clone_from(&other.channels);
-        self.precipitation.clone_from(&other.precipitation);
-    }
-
     /// Bytes of the buffers' capacity.
     pub fn capacity_bytes(&self) -> usize {
         self.vertices.capacity() * std::mem::size_of::<Vertex>()

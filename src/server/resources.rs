@@ -226,9 +226,10 @@ fn render(
 /// and 3D Tiles contents quantized and meshopt-compressed by default, their vertex colours
 /// linear as glTF defines them; 9-11: landform detail, the map's roughness, Earth's snow line;
 /// 12: ground colours by the climate's moisture; 13: coarse 3D Tiles levels' colours are
-/// means of the fine surface; 14: rivers as lines in view.glb; 15: and in 3D Tiles), so
+/// means of the fine surface; 14: rivers as lines in view.glb; 15: and in 3D Tiles; 16:
+/// elevation tiles resampled from samples every 4 pixels), so
 /// that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "15";
+pub const ANSWERS_REVISION: &str = "16";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

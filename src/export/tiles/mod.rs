@@ -94,6 +94,8 @@ pub struct PlanetTiles {
     rivers: OnceLock<crate::export::vector_tiles::RiverLines>,
     /// The base mesh's colours for coarse levels' means, made by the first content.
     colours: OnceLock<crate::export::colour_mip::ColourMip>,
+    /// The elevation tiles' overview grid (`terrain_rgb.rs`), made on first use.
+    dem_overview: OnceLock<Vec<f32>>,
     /// Buffers of finished refinements, for the next ones (at most [`MAX_SPARES`]).
     spares: Mutex<Vec<crate::mesh::Mesh>>,
 }
@@ -123,6 +125,7 @@ impl PlanetTiles {
             faces: OnceLock::new(),
             rivers: OnceLock::new(),
             colours: OnceLock::new(),
+            dem_overview: OnceLock::new(),
             spares: Mutex::new(Vec::new()),
         })
     }
@@ -140,9 +143,10 @@ impl PlanetTiles {
         self.rivers.get_or_init(|| crate::export::vector_tiles::RiverLines::new(&self.planet))
     }
 
-    /// The bisection tree of the base mesh.
-    pub(crate) fn tree(&self) -> &BaseTree {
-        &self.tree
+    /// The elevation tiles' overview grid, made by `make` on first use (see
+    /// [`crate::export::terrain_rgb`]).
+    pub(crate) fn dem_overview(&self, make: impl FnOnce(&PlanetTiles) -> Vec<f32>) -> &[f32] {
+        self.dem_overview.get_or_init(|| make(self))
     }
 
     /// The base mesh's faces by cell.
@@ -187,6 +191,7 @@ impl PlanetTiles {
             + self.faces.get().map_or(0, |f| f.bytes())
             + self.rivers.get().map_or(0, |r| r.bytes())
             + self.colours.get().map_or(0, |c| c.bytes())
+            + self.dem_overview.get().map_or(0, |o| o.len() * 4)
             + MAX_SPARES * self.planet.mesh.capacity_bytes() * 5 / 4
     }
 

@@ -503,3 +503,32 @@ fn tiles_carry_their_rivers_as_lines_on_their_surface() {
         assert!(above > -1.0 && above < 0.02 * edge, "a line end {above:.0} m above the terrain");
     }
 }
+
+/// A refiner gives back its buffers as a copy of the base mesh again, so the next refiner
+/// (which refines them without copying the base) starts from the base: after tile contents,
+/// DEM tiles and terrain tiles, every spare equals the base mesh, and a content made on
+/// recycled buffers is the one made on a fresh copy.
+#[test]
+fn recycled_buffers_are_the_base_mesh_again() {
+    let params = Params { base_faces: 2000, ..Params::default() };
+    let t = PlanetTiles::new(Arc::new(test_planet().clone()), params).unwrap();
+    let base = &test_planet().mesh;
+    let check = |what: &str| {
+        let spares = t.spares.lock().unwrap();
+        assert!(!spares.is_empty(), "{what}: buffers kept");
+        for m in spares.iter() {
+            assert!(m.vertices == base.vertices && m.edges == base.edges && m.faces == base.faces, "{what}");
+        }
+    };
+    let key = TileKey::root(3).children()[1].children()[2];
+    let first = t.content(key, Compression::None).glb;
+    check("a tile content");
+    for (z, x, y) in [(5, 9, 11), (7, 40, 50), (2, 1, 1)] {
+        crate::export::terrain_rgb::dem_tile_png(&t, z, x, y, crate::export::terrain_rgb::Encoding::Terrarium).unwrap();
+        check("an elevation tile");
+        let ext = crate::export::quantized_mesh::Extensions::ALL;
+        crate::export::quantized_mesh::terrain_tile(&t, (z, x, y), ext, 14).unwrap();
+        check("a terrain tile");
+    }
+    assert_eq!(t.content(key, Compression::None).glb, first, "a content on recycled buffers");
+}

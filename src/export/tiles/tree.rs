@@ -105,6 +105,17 @@ pub struct Refiner<'a> {
     spare: Option<Mesh>,
     midpoints: HashMap<u64, u32>,
     edges: HashMap<u64, u32>,
+    /// Base-mesh vertices, edges and faces the splits rewrote (see [`Refiner::take_buffers`]).
+    touched: Touched,
+}
+
+/// Indices of the base mesh's entities that splits rewrote: a split rewrites its edge, the two
+/// faces beside it, their outer edges (face links) and one end's edge link; all else it appends.
+#[derive(Default)]
+struct Touched {
+    vertices: Vec<u32>,
+    edges: Vec<u32>,
+    faces: Vec<u32>,
 }
 
 impl<'a> Refiner<'a> {
@@ -117,19 +128,37 @@ impl<'a> Refiner<'a> {
             spare: None,
             midpoints: HashMap::default(),
             edges: HashMap::default(),
+            touched: Touched::default(),
         }
     }
 
-    /// Copies the base mesh into `spare`'s buffers on the first split instead of new ones:
-    /// on a large planet, the fresh pages of a new copy cost more than the copy.
+    /// Refines `spare`, a copy of the base mesh that an earlier refiner gave back with
+    /// [`Refiner::take_buffers`], instead of copying the base mesh on the first split: on a large
+    /// planet the copy (30 MB for the Earth DEM's) costs more than a small region's splits.
     pub fn with_spare(mut self, spare: Option<Mesh>) -> Refiner<'a> {
+        debug_assert!(spare.as_ref().is_none_or(|m| m.vertices.len() == self.base.vertices.len()));
         self.spare = spare;
         self
     }
 
-    /// The buffers this refiner holds (the refined mesh, or the unused spare), for another.
+    /// The buffers this refiner holds, restored to a copy of the base mesh (its appended
+    /// entities dropped, the base entities its splits rewrote copied back), for another.
     pub fn take_buffers(&mut self) -> Option<Mesh> {
-        self.refined.take().or_else(|| self.spare.take())
+        let Some(mut mesh) = self.refined.take() else { return self.spare.take() };
+        let base = self.base;
+        mesh.vertices.truncate(base.vertices.len());
+        mesh.edges.truncate(base.edges.len());
+        mesh.faces.truncate(base.faces.len());
+        let t = std::mem::take(&mut self.touched);
+        fn restore<T: Copy>(to: &mut [T], from: &[T], ids: &[u32]) {
+            for &i in ids.iter().filter(|&&i| (i as usize) < from.len()) {
+                to[i as usize] = from[i as usize];
+            }
+        }
+        restore(&mut mesh.vertices, &base.vertices, &t.vertices);
+        restore(&mut mesh.edges, &base.edges, &t.edges);
+        restore(&mut mesh.faces, &base.faces, &t.faces);
+        Some(mesh)
     }
 
     /// Makes room for about `splits` more splits (their midpoints and edges).
@@ -152,7 +181,11 @@ impl<'a> Refiner<'a> {
     /// closure) if no split has yet.
     pub fn midpoint(&mut self, a: u32, b: u32) -> u32 {
         let key = pair(a, b);
-        if let Some(&m) = self.tree.midpoints.get(&key).or_else(|| self.midpoints.get(&key)) {
+        // Only edges between base-mesh vertices may be the base's (a large map: skipped when
+        // it cannot hold the edge).
+        let n = self.base.vertices.len() as u32;
+        let base = if a < n && b < n { self.tree.midpoints.get(&key) } else { None };
+        if let Some(&m) = base.or_else(|| self.midpoints.get(&key)) {
             return m;
         }
         let e = *self
@@ -164,16 +197,16 @@ impl<'a> Refiner<'a> {
         let guide = self.base.guide.clone();
         let guide = guide.as_deref();
         let (base, spare) = (self.base, &mut self.spare);
-        let mesh = self.refined.get_or_insert_with(|| match spare.take() {
-            Some(mut m) => {
-                m.copy_from(base);
-                m
-            }
-            None => base.clone(),
-        });
+        let mesh = self.refined.get_or_insert_with(|| spare.take().unwrap_or_else(|| base.clone()));
         let mut sites: Vec<SplitSite> = Vec::new();
+        let touched = &mut self.touched;
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
+            touched.vertices.extend([site.a, site.b]);
+            touched.faces.extend([site.f1, site.f2]);
+            for f in [site.f1, site.f2] {
+                touched.edges.extend(m.faces[f as usize].e);
+            }
             split_vertex(&crate::mesh::Diamond::new(m, site), params, guide)
         });
         for (site, split) in sites.iter().zip(&splits) {
@@ -185,6 +218,13 @@ impl<'a> Refiner<'a> {
             }
         }
         self.midpoints[&key]
+    }
+
+    /// Whether the base mesh splits `node` (a node with a vertex this refiner made lies below
+    /// the base mesh's leaves).
+    pub fn base_splits(&self, node: [u32; 3]) -> bool {
+        let n = self.base.vertices.len() as u32;
+        node.iter().all(|&v| v < n) && self.tree.splits_edge(node[1], node[2])
     }
 
     /// The two children of `node`.
