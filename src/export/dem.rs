@@ -313,7 +313,13 @@ impl<'a> Surface<'a> {
         let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
         while let Some(node) = stack.pop() {
             let u = node.map(|v| refiner.mesh().pos(v).normalize());
-            if !region.may_meet(&u) {
+            // A node's descendants are not inside it: each split puts its vertex anywhere in
+            // the middle of the diamond around the split edge (eq. 2), so they reach into its
+            // neighbours, by up to about its own size. A node is passed over only when nothing
+            // within its longest edge of it meets the region (without that, base faces 90 times
+            // the cells' size were left unsplit inside regions whose ancestors lay outside).
+            let reach = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            if !region.may_meet_within(&u, reach) {
                 continue;
             }
             // A leaf: at least the base mesh's detail, and edges no longer than a cell where the
@@ -523,13 +529,23 @@ impl Region {
     /// edge of chord `L`, allowed as a margin of `L^2 / 4`.
     #[inline]
     fn may_meet(&self, u: &[DVec3; 3]) -> bool {
+        self.may_meet_within(u, 0.0)
+    }
+
+    /// Whether anything within `reach` (radians, small) of the triangle may meet the
+    /// rectangle: a point that far from a plane through the centre lies at most `reach` past it
+    /// (as a dot product with the unit normal), and that far from a latitude at most `reach`
+    /// in `z`.
+    #[inline]
+    fn may_meet_within(&self, u: &[DVec3; 3], reach: f64) -> bool {
         if let Some([nw, ne]) = self.meridians {
-            if u.iter().all(|x| nw.dot(*x) < 0.0) || u.iter().all(|x| ne.dot(*x) < 0.0) {
+            let out = -reach;
+            if u.iter().all(|x| nw.dot(*x) < out) || u.iter().all(|x| ne.dot(*x) < out) {
                 return false;
             }
         }
         let size = u[0].distance_squared(u[1]).max(u[1].distance_squared(u[2])).max(u[2].distance_squared(u[0]));
-        let margin = size * 0.25 + 1e-12;
+        let margin = size * 0.25 + 1e-12 + reach;
         let (lo, hi) = (u[0].z.min(u[1].z).min(u[2].z), u[0].z.max(u[1].z).max(u[2].z));
         lo <= self.z[1] + margin && hi >= self.z[0] - margin
     }

@@ -13,17 +13,12 @@
 //!
 //! **Borders.** The surface is refined [`MARGIN`] cells past the tile on every side, so that
 //! along a side both tiles that share it refine alike and give the same heights (up to each
-//! tile's 16-bit height step). Measured on the Earth DEM: 398 of 400 random shared sides match;
-//! two differ, by up to 182 m, where the refined regions lie on different sides of an octahedron
-//! edge (the 0° meridian by Lake Volta, and the south pole): there Cesium's skirts, hung from the
-//! edge index lists, close the gap. On and beside the octahedron's edges themselves (the
-//! equator, the meridians 0°, 90°E, 180° and 90°W, zooms 2-7: the ignored test
-//! `earth_borders_on_octahedron_edges`) 22 of 528 sides differ, by 0.5-218 m, 18 of them in the
-//! row at the south pole, anywhere along the side: there a cell is far narrower east-west than
-//! north-south, the refinement's edges (a quarter of the north-south cell and longer) are longer
-//! than the margin's 8 cells of longitude, and the faces along a border reach past the margin
-//! into regions that the two tiles refine differently. A margin in metres would mean refining
-//! the whole polar cap for the tiles at the pole; not done.
+//! tile's 16-bit height step). Measured on the Earth DEM on and beside the octahedron's edges
+//! (the equator, the meridians 0°, 90°E, 180° and 90°W, the polar rows; zooms 2-7, the test
+//! `earth_borders_on_octahedron_edges`): 528 of 528 shared sides match. (They did not, 22 of
+//! them by 0.5-218 m, while the refinement passed over tree nodes lying just outside its
+//! region: a node's descendants reach past it, and base faces inside the region were left
+//! unsplit; `dem.rs` now descends every node within its own size of the region.)
 //!
 //! **Extensions**, written when the request's `Accept` asks for them (the static export writes
 //! all three): `octvertexnormals` (normals from central differences of the grid and a ring of

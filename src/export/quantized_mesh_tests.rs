@@ -282,14 +282,9 @@ fn layer_json_names_the_tiles() {
 /// the meridians 0°, 90°E, 180°, 90°W), where two tiles' refined regions may lie in different
 /// root triangles.
 #[test]
-#[ignore = "diagnostic: builds the Earth DEM planet"]
 fn earth_borders_on_octahedron_edges() {
-    use crate::maps::{Map, MapKind, MapLimits};
-    let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_etopo5_1024x512.tif")).unwrap();
-    let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
-    let spec = crate::planet::PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
-    let planet = crate::planet::build_planet(&spec, &mut |_, _| {}).unwrap();
-    let t = PlanetTiles::new(Arc::new(planet), Params::default()).unwrap();
+    let Some(planet) = crate::planet::tests_relief::earth() else { return };
+    let t = PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
     let get = |z, x, y| read(&terrain_tile(&t, (z, x, y), Extensions::default(), MAX_ZOOM).unwrap());
     let (mut checked, mut bad) = (0, 0);
     for z in 2u8..=7 {
