@@ -256,7 +256,19 @@ fn sample_block(tiles: &PlanetTiles, req: &DemRequest, col0: u32, row0: u32) -> 
 /// Samples small grids from one surface, refined over `detail`'s bounds for its cells: a
 /// terrain tile's heights and water mask. Every grid must lie inside `detail`'s bounds.
 pub fn sample_grids(tiles: &PlanetTiles, detail: &DemRequest, grids: &[DemRequest]) -> Vec<Dem> {
-    let surface = Surface::refine(tiles, detail.bounds, detail.pixel(), detail.rows);
+    sample_grids_in(tiles, detail.bounds, detail.pixel(), detail.rows, grids)
+}
+
+/// [`sample_grids`] from the surface refined over `rect` for cells of `cell` degrees
+/// (longitude, latitude) whose rows divide latitudes as `rows` does.
+pub fn sample_grids_in(
+    tiles: &PlanetTiles,
+    rect: GeoBounds,
+    cell: [f64; 2],
+    rows: Rows,
+    grids: &[DemRequest],
+) -> Vec<Dem> {
+    let surface = Surface::refine(tiles, rect, cell, rows);
     grids
         .iter()
         .map(|req| {
