@@ -18,8 +18,8 @@
 //! `earth_borders_on_octahedron_edges`): 528 of 528 shared sides match. (They did not, 22 of
 //! them by 0.5-218 m, while the refinement passed over tree nodes lying just outside its
 //! region: a node's descendants reach past it, and base faces inside the region were left
-//! unsplit; `dem.rs` now descends every node within its own size of the region. Since then 40
-//! tiles of zooms 2-12 are the same bytes with margins of 2 and 8 cells.)
+//! unsplit; `dem.rs` now descends every node whose descendants may reach the region. Since
+//! then 40 tiles of zooms 2-12 are the same bytes with margins of 2 and 8 cells.)
 //!
 //! **Extensions**, written when the request's `Accept` asks for them (the static export writes
 //! all three): `octvertexnormals` (normals from central differences of the grid and a ring of

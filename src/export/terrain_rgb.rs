@@ -10,7 +10,7 @@
 //! with the split rule of views and tiles; each pixel is the Catmull-Rom cubic through its
 //! 4 x 4 nearest samples, clamped to the range of the nearest 2 x 2 (no ringing at a coast).
 //! So a tile shows the relief down to about 1/50 of its side (the next zoom twice finer) for a
-//! 25th of the splits of a surface refined to its pixels: a cold tile in 7-11 ms instead of
+//! 25th of the splits of a surface refined to its pixels: a cold tile in 9-16 ms instead of
 //! 0.3-0.5 s (BENCHMARKS.md). Against a DEM of the tile refined to its pixels, r 0.95-0.997.
 //! The two halves of the grid are refined in parallel, each [`MARGIN`] samples past its rows:
 //! the halves, and neighbouring tiles (whose ring samples are each other's), sample alike —
