@@ -22,7 +22,7 @@
 //! value, where the ground is dry.
 
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{PlanetTiles, Refiner, ROOTS};
+use super::tiles::{PlanetTiles, Refiner, DESCENDANT_REACH, ROOTS};
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
@@ -325,15 +325,13 @@ impl<'a> Surface<'a> {
         let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
         while let Some(node) = stack.pop() {
             let u = node.map(|v| refiner.mesh().pos(v).normalize());
-            // A node's descendants are not inside it: each split puts its vertex anywhere in
-            // the middle of the diamond around the split edge (eq. 2, weights 1/4 to 3/4), up to
-            // 3/8 of the way to the far apex, about 0.19 of the edge past it; the children's
-            // splits add as much of theirs, so the descendants reach up to about 0.65 of the
-            // node's longest edge past it. A node is passed over only when nothing within 0.7
-            // of that edge meets the region (without that, base faces 90 times the cells' size
-            // were left unsplit inside regions whose ancestors lay outside; at 0.3, 4 of the
-            // 528 tested terrain-tile sides differ again).
-            let reach = 0.7 * u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            // A node's descendants are not inside it (eq. 2): it is passed over only when
+            // nothing within DESCENDANT_REACH of its longest edge meets the region (without
+            // that, base faces 90 times the cells' size were left unsplit inside regions whose
+            // ancestors lay outside; at a reach of 0.3, 4 of the 528 tested terrain-tile sides
+            // differ again).
+            let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            let reach = DESCENDANT_REACH * longest;
             if !region.may_meet_within(&u, reach) {
                 continue;
             }

@@ -2,11 +2,13 @@
 //! large planet (a DEM, an elevation or terrain tile) looks at the faces near it instead of all
 //! of them.
 //!
-//! A face is listed in every cell its bounds meet, widened by half its longest edge: the faces
-//! that splits below it make stay inside that (eq. 2 moves a split's vertex off its edge by far
-//! less than the edge). [`FaceIndex::candidates`] is therefore a superset of the faces and
-//! descendants that meet a rectangle; callers still test each candidate.
+//! A face is listed in every cell its bounds meet, widened by [`DESCENDANT_REACH`] of its
+//! longest edge: the faces that splits below it make stay inside that. (It was half the edge,
+//! on the belief that eq. 2 moves a split's vertex off its edge by far less than the edge; it
+//! may move it about 0.19 of it.) [`FaceIndex::candidates`] is therefore a superset of the faces
+//! and descendants that meet a rectangle; callers still test each candidate.
 
+use crate::export::tiles::DESCENDANT_REACH;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::triangle_bounds;
 use crate::mesh::Mesh;
@@ -38,7 +40,7 @@ impl FaceIndex {
             let nrm = [u[1].cross(u[2]), u[2].cross(u[0]), u[0].cross(u[1])];
             let (lo, hi, lon) = triangle_bounds(u, &nrm);
             let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
-            let pad = 0.5 * longest.to_degrees();
+            let pad = DESCENDANT_REACH * longest.to_degrees();
             let row = |lat: f64| (((90.0 - lat) / cell).floor().max(0.0) as usize).min(rows - 1);
             let (r0, r1) = (row(hi + pad), row(lo - pad));
             for r in r0..=r1 {
