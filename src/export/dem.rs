@@ -22,10 +22,11 @@
 //! value, where the ground is dry.
 
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{PlanetTiles, Refiner, DESCENDANT_REACH, ROOTS};
+use super::tiles::{PlanetTiles, Refiner, ROOTS};
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
+use crate::mesh::split::position::DESCENDANT_REACH;
 use glam::DVec3;
 use rayon::prelude::*;
 

@@ -8,9 +8,9 @@
 //! may move it about 0.19 of it.) [`FaceIndex::candidates`] is therefore a superset of the faces
 //! and descendants that meet a rectangle; callers still test each candidate.
 
-use crate::export::tiles::DESCENDANT_REACH;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::triangle_bounds;
+use crate::mesh::split::position::DESCENDANT_REACH;
 use crate::mesh::Mesh;
 
 /// Faces binned on a grid of square cells in degrees.

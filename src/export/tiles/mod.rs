@@ -41,7 +41,7 @@ pub use content::{ContentSpec, TileContent};
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
-pub use tree::{BaseTree, NotBisected, Refiner, DESCENDANT_REACH, ROOTS};
+pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::export::glb::Compression;
 use crate::params::Params;

@@ -19,13 +19,6 @@ use rustc_hash::FxHashMap as HashMap;
 pub const ROOTS: [[u32; 3]; 8] =
     [[4, 0, 1], [5, 1, 0], [4, 1, 2], [5, 2, 1], [4, 2, 3], [5, 3, 2], [4, 3, 0], [5, 0, 3]];
 
-/// How far past a node its descendants may lie, in its longest edges: eq. 2 puts a split's
-/// vertex anywhere in the middle of the diamond around the split edge (weights 1/4 to 3/4), up
-/// to 3/8 of the way to the far apex, about 0.19 of the edge past the node; the children's
-/// splits add as much of theirs, about 0.65 in all. Walks that look for the nodes near a region
-/// (`dem.rs`) and the face index (`face_index.rs`) allow this much.
-pub const DESCENDANT_REACH: f64 = 0.7;
-
 /// Key of an unordered vertex pair.
 #[inline]
 fn pair(a: u32, b: u32) -> u64 {

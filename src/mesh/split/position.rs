@@ -7,6 +7,13 @@ use crate::mesh::{Diamond, EdgeKind};
 use crate::rng::{salt, uniform, unit};
 use glam::DVec3;
 
+/// How far past a node of the bisection tree its descendants may lie, in its longest edges:
+/// eq. 2 puts a split's vertex anywhere in the middle of the diamond around the split edge
+/// (weights 1/4 to 3/4), up to 3/8 of the way to the far apex, about 0.19 of the edge past the
+/// node; the children's splits add as much of theirs, about 0.65 in all. Walks that look for the nodes near a region
+/// (`export/dem.rs`) and the face index (`export/face_index.rs`) allow this much.
+pub const DESCENDANT_REACH: f64 = 0.7;
+
 /// Seed of the vertex a split of the diamond `d` creates (§3.1: the sum of the end points' seeds).
 pub fn split_seed(d: &Diamond) -> u32 {
     d.a().seed.wrapping_add(d.b().seed)
