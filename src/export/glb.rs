@@ -12,7 +12,10 @@
 
 use super::climate::vertex_colour;
 pub use super::glb_pack::Compression;
-use super::glb_pack::{meshopt_stream, quantize_line_positions, quantize_normals, quantize_positions, StreamKind};
+use super::glb_pack::{
+    filter_positions, meshopt_stream, octahedral_normals, position_step_limit, quantize_positions, shortest_edge,
+    StreamKind,
+};
 use super::surface_normals;
 use crate::mesh::{Mesh, VertexFlags};
 use crate::params::Params;
@@ -150,8 +153,10 @@ enum ViewData<'a> {
     Rgba(&'a [[u8; 4]]),
     /// Quantized positions (x, y, z, pad).
     Short4(Vec<[i16; 4]>),
-    /// Quantized normals (x, y, z, pad).
-    Byte4(Vec<[i8; 4]>),
+    /// Positions through the `EXPONENTIAL` filter.
+    Exponential(Vec<[u32; 3]>),
+    /// Normals through the `OCTAHEDRAL` filter.
+    Octahedral(Vec<[i8; 4]>),
     /// Triangle indices written as u16 (all below 65535), or as u32.
     U16(&'a [u32]),
     U32(&'a [u32]),
@@ -166,7 +171,8 @@ impl ViewData<'_> {
             ViewData::Vec3(v) => v.len() * 12,
             ViewData::Rgba(c) => c.len() * 4,
             ViewData::Short4(v) => v.len() * 8,
-            ViewData::Byte4(v) => v.len() * 4,
+            ViewData::Exponential(v) => v.len() * 12,
+            ViewData::Octahedral(v) => v.len() * 4,
             ViewData::U16(i) | ViewData::Lines16(i) => i.len() * 2,
             ViewData::U32(i) | ViewData::Lines32(i) => i.len() * 4,
         }
@@ -175,8 +181,8 @@ impl ViewData<'_> {
     /// Its meshopt stream's kind; `vertices` is the count its indices stay below.
     fn stream_kind(&self, vertices: usize) -> StreamKind {
         match self {
-            ViewData::Vec3(_) => StreamKind::Attributes { stride: 12 },
-            ViewData::Rgba(_) | ViewData::Byte4(_) => StreamKind::Attributes { stride: 4 },
+            ViewData::Vec3(_) | ViewData::Exponential(_) => StreamKind::Attributes { stride: 12 },
+            ViewData::Rgba(_) | ViewData::Octahedral(_) => StreamKind::Attributes { stride: 4 },
             ViewData::Short4(_) => StreamKind::Attributes { stride: 8 },
             ViewData::U16(_) => StreamKind::Triangles { stride: 2, vertices },
             ViewData::U32(_) => StreamKind::Triangles { stride: 4, vertices },
@@ -185,7 +191,16 @@ impl ViewData<'_> {
         }
     }
 
-    /// Appends the little-endian bytes, then zeros up to a multiple of 4.
+    /// The meshopt filter its stream went through, if any.
+    fn filter(&self) -> Option<&'static str> {
+        match self {
+            ViewData::Exponential(_) => Some("EXPONENTIAL"),
+            ViewData::Octahedral(_) => Some("OCTAHEDRAL"),
+            _ => None,
+        }
+    }
+
+    /// Appends the little-endian bytes (a filtered view's: the filter's output), then zeros up to a multiple of 4.
     fn write(&self, out: &mut Vec<u8>) {
         let little = cfg!(target_endian = "little");
         match self {
@@ -193,7 +208,8 @@ impl ViewData<'_> {
             ViewData::Vec3(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
             ViewData::Rgba(c) => out.extend_from_slice(bytemuck::cast_slice(c)),
             ViewData::Short4(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
-            ViewData::Byte4(v) => out.extend(v.iter().flatten().map(|&x| x as u8)),
+            ViewData::Exponential(v) => v.iter().flatten().for_each(|x| out.extend_from_slice(&x.to_le_bytes())),
+            ViewData::Octahedral(v) => out.extend(v.iter().flatten().map(|&x| x as u8)),
             ViewData::U16(i) | ViewData::Lines16(i) => {
                 i.iter().for_each(|&i| out.extend_from_slice(&(i as u16).to_le_bytes()))
             }
@@ -332,13 +348,11 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
         let n = m.positions.len();
         let mut attributes = BTreeMap::new();
-        let quantized = match (packed, m.lines) {
-            (false, _) => None,
-            (true, false) => quantize_positions(&m.positions, &m.indices),
-            (true, true) => quantize_line_positions(&m.positions, &m.indices),
-        };
-        let (position, transform) = match quantized {
-            Some(q) => {
+        let limit = position_step_limit(shortest_edge(&m.positions, &m.indices, m.lines));
+        let quantized = if packed { quantize_positions(&m.positions, limit) } else { None };
+        let filtered = if packed && quantized.is_none() { filter_positions(&m.positions, limit) } else { None };
+        let (position, transform) = match (quantized, filtered) {
+            (Some(q), _) => {
                 let (lo, hi) = extent(q.values.iter().map(|v| [v[0], v[1], v[2]]), i16::MAX, i16::MIN);
                 let bounds = (serde_json::json!(lo), serde_json::json!(hi));
                 let base = m.translation.unwrap_or([0.0; 3]);
@@ -348,10 +362,12 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
                 let acc = accessor(view, n, ComponentType::I16, Type::Vec3, false, Some(bounds));
                 (acc, (Some(translation), Some(q.step)))
             }
-            None => {
-                let (lo, hi) = extent(m.positions.iter().copied(), f32::INFINITY, f32::NEG_INFINITY);
+            (None, filtered) => {
+                let decoded = filtered.as_ref().map_or(&m.positions[..], |f| &f.decoded[..]);
+                let (lo, hi) = extent(decoded.iter().copied(), f32::INFINITY, f32::NEG_INFINITY);
                 let bounds = (serde_json::json!(lo.map(f64::from)), serde_json::json!(hi.map(f64::from)));
-                let view = layout.push(&mut root, ViewData::Vec3(&m.positions), n, ArrayBuffer, packed);
+                let data = filtered.map_or(ViewData::Vec3(&m.positions), |f| ViewData::Exponential(f.values));
+                let view = layout.push(&mut root, data, n, ArrayBuffer, packed);
                 (accessor(view, n, ComponentType::F32, Type::Vec3, false, Some(bounds)), (m.translation, None))
             }
         };
@@ -359,7 +375,8 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
         if !m.normals.is_empty() {
             let acc = if packed {
                 quantized_any = true;
-                let view = layout.push(&mut root, ViewData::Byte4(quantize_normals(&m.normals)), n, ArrayBuffer, true);
+                let view =
+                    layout.push(&mut root, ViewData::Octahedral(octahedral_normals(&m.normals)), n, ArrayBuffer, true);
                 accessor(view, n, ComponentType::I8, Type::Vec3, true, None)
             } else {
                 let view = layout.push(&mut root, ViewData::Vec3(&m.normals), n, ArrayBuffer, false);
@@ -466,14 +483,18 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     }
     if packed && bin_len > 0 {
         value["buffers"][1]["extensions"] = serde_json::json!({ MESHOPT: { "fallback": true } });
-        for (i, ((offset, len), kind)) in streams.iter().zip(&layout.kinds).enumerate() {
+        for (i, (((offset, len), kind), data)) in streams.iter().zip(&layout.kinds).zip(&layout.views).enumerate() {
             let view = &mut value["bufferViews"][i];
             view["buffer"] = serde_json::json!(1);
             let count = view["byteLength"].as_u64().expect("a length") / kind.stride() as u64;
-            view["extensions"] = serde_json::json!({ MESHOPT: {
+            let mut ext = serde_json::json!({
                 "buffer": 0, "byteOffset": offset, "byteLength": len,
                 "byteStride": kind.stride(), "count": count, "mode": kind.mode(),
-            }});
+            });
+            if let Some(filter) = data.filter() {
+                ext["filter"] = serde_json::json!(filter);
+            }
+            view["extensions"] = serde_json::json!({ MESHOPT: ext });
         }
     }
     let mut json_bytes = serde_json::to_vec(&value).expect("glTF JSON serialises");
