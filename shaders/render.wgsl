@@ -20,8 +20,11 @@ struct Frame {
     // w: depth of the darkest water, metres.
     lookup: vec4<f32>,
     // x: haze length of the sky, metres; y: precipitation at the end of the climate texture's
-    // z axis (which runs over its square root), mm/yr.
+    // z axis (which runs over its square root), mm/yr; z, w: the cosines of the slopes at which
+    // land is all bare rock and at which it starts to be.
     sky: vec4<f32>,
+    // Bare rock's colour, linear (xyz).
+    rock: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -101,9 +104,14 @@ fn terrain_fragment(s: Surface) -> @location(0) vec4<f32> {
     let u = clamp((s.data.x - frame.lookup.x) / frame.lookup.y, 0.0, 1.0);
     let v = clamp((90.0 - abs(s.data.z)) / 90.0, 0.0, 1.0);
     let w = sqrt(clamp(s.data.w / frame.sky.y, 0.0, 1.0));
-    let albedo = textureSampleLevel(climate, ramp_sampler, vec3<f32>(u, v, w), 0.0).rgb;
-    let colour = lit(albedo, normalize(s.normal), normalize(s.up));
-    return vec4<f32>(haze(colour, s.position, normalize(s.up)), 1.0);
+    let climate_albedo = textureSampleLevel(climate, ramp_sampler, vec3<f32>(u, v, w), 0.0).rgb;
+    let n = normalize(s.normal);
+    let up = normalize(s.up);
+    // Steep land is bare rock (`climate::on_slope`); the sea floor keeps its colour.
+    let bare = select(0.0, 1.0 - smoothstep(frame.sky.z, frame.sky.w, dot(n, up)), s.data.x > 0.0);
+    let albedo = mix(climate_albedo, frame.rock.xyz, bare);
+    let colour = lit(albedo, n, up);
+    return vec4<f32>(haze(colour, s.position, up), 1.0);
 }
 
 // The water surface: flat at the level of the water body, the same vertices moved along their

@@ -42,8 +42,10 @@
 //!
 //! Colours (sRGB): tropical forest (30, 95, 40), forest (50, 110, 45), steppe (145, 160, 85),
 //! desert (215, 190, 130), tundra (150, 150, 120), ice (235, 242, 250), rock (125, 110, 100),
-//! snow (250, 250, 252). Sea: `water_colour` runs from (120, 190, 215) at the coast to
-//! (10, 30, 90) at 6000 m depth along a square-root curve (shelves stay light).
+//! snow (250, 250, 252); steep land, whatever grows or lies on it, is bare rock
+//! ([`on_slope`]: 30-45°, in views, tiles and renders alike). Sea: `water_colour` runs from
+//! (120, 190, 215) at the coast to (10, 30, 90) at 6000 m depth along a square-root curve
+//! (shelves stay light).
 
 use crate::mesh::Mesh;
 use crate::params::{Climate, Params, Preset};
@@ -244,6 +246,59 @@ pub fn climate_colour(palette: Palette, lat_deg: f64, altitude_m: f64, precip_mm
     to_u8(mix(rocky, SNOW, smoothstep(snow - 150.0, snow + 150.0, alt)))
 }
 
+/// Slopes (degrees from the horizontal) over which land turns to bare rock: none below the
+/// first, all above the second (cliffs and rock walls, on which neither plants nor snow hold).
+/// Loose rock and soil rest up to about 35° (their angle of repose); the mesh's slopes at a
+/// view's resolution are 0.7-0.8 of real ones at the same spacing (docs/realism.md), hence
+/// five degrees less.
+pub const BARE_ROCK_SLOPE_DEG: [f64; 2] = [30.0, 45.0];
+
+/// The share of bare rock on land whose normal makes an angle of cosine `cos_slope` with the
+/// local up: 1 - smoothstep(cos 50°, cos 35°, cos_slope), as the renderer computes it.
+pub fn bare_rock_share(cos_slope: f64) -> f64 {
+    let [gentle, steep] = BARE_ROCK_SLOPE_DEG.map(|d| d.to_radians().cos());
+    if cos_slope.is_finite() {
+        1.0 - smoothstep(steep, gentle, cos_slope)
+    } else {
+        0.0
+    }
+}
+
+/// Bare rock's colour in linear light (the renderer's uniform; `ROCK` is sRGB).
+pub fn rock_linear() -> [f64; 3] {
+    ROCK.map(|c| srgb_to_linear(c / 255.0))
+}
+
+fn srgb_to_linear(c: f64) -> f64 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+fn linear_to_srgb(l: f64) -> f64 {
+    if l <= 0.003_130_8 {
+        l * 12.92
+    } else {
+        1.055 * l.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// A land colour (sRGB) on a slope of cosine `cos_slope`: mixed towards bare rock by
+/// [`bare_rock_share`], in linear light as the renderer mixes it.
+pub fn on_slope(srgb: [u8; 3], cos_slope: f64) -> [u8; 3] {
+    let t = bare_rock_share(cos_slope);
+    if t <= 0.0 {
+        return srgb;
+    }
+    let rock = rock_linear();
+    std::array::from_fn(|i| {
+        let l = srgb_to_linear(f64::from(srgb[i]) / 255.0);
+        (linear_to_srgb(l + (rock[i] - l) * t) * 255.0).round().clamp(0.0, 255.0) as u8
+    })
+}
+
 /// The climate's mean annual precipitation (mm) at a latitude and longitude of `mesh`: its
 /// planet's ([`crate::mesh::Mesh::precipitation`]), else the climate model's zonal mean.
 pub fn precipitation_mm(mesh: &Mesh, lat_deg: f64, lon_deg: f64) -> f64 {
@@ -271,6 +326,20 @@ pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
         ground_colour(mesh, Palette::of(params), vert.p(), vert.ground - sea)
     } else {
         water_colour(sea - vert.ground)
+    }
+}
+
+/// [`vertex_colour`] on the vertex's slope: land whose unit `normal` (planet frame) is steep
+/// turns to bare rock ([`on_slope`]); water keeps its colour.
+pub fn surface_colour(mesh: &Mesh, params: &Params, v: usize, normal: glam::DVec3) -> [u8; 3] {
+    use crate::mesh::VertexFlags;
+    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
+    let vert = &mesh.vertices[v];
+    let colour = vertex_colour(mesh, params, v);
+    if vert.flags.intersects(land) {
+        on_slope(colour, normal.normalize_or_zero().dot(vert.p().normalize_or_zero()))
+    } else {
+        colour
     }
 }
 
@@ -392,6 +461,49 @@ mod tests {
         }
         assert!(snow_line_m(earth(Climate::Arid), 30.0) > snow_line_m(t, 30.0));
         assert!(snow_line_m(earth(Climate::Frozen), 30.0) < snow_line_m(t, 30.0));
+    }
+
+    /// Forest and snow stay on slopes up to 30°, are half rock at 38° and all rock from 45°;
+    /// the mix is in linear light (as the renderer's), and only land turns to rock.
+    #[test]
+    fn steep_land_is_bare_rock() {
+        let cos = |deg: f64| deg.to_radians().cos();
+        let forest = to_u8(FOREST);
+        let snow = to_u8(SNOW);
+        for c in [forest, snow] {
+            assert_eq!(on_slope(c, 1.0), c);
+            assert_eq!(on_slope(c, cos(29.9)), c);
+            assert!(close(on_slope(c, cos(45.0)), ROCK, 0), "{:?}", on_slope(c, cos(45.0)));
+            assert!(close(on_slope(c, cos(80.0)), ROCK, 0));
+        }
+        assert!((bare_rock_share((cos(30.0) + cos(45.0)) / 2.0) - 0.5).abs() < 1e-9);
+        assert!((0.4..0.5).contains(&bare_rock_share(cos(37.5))));
+        let mut last = 0.0;
+        for deg in 0..=90 {
+            let share = bare_rock_share(cos(f64::from(deg)));
+            assert!(share >= last, "{deg}°");
+            last = share;
+        }
+        assert_eq!(bare_rock_share(f64::NAN), 0.0);
+        // Half way, in linear light: brighter than the mean of the sRGB bytes.
+        let half = on_slope(snow, cos(37.5));
+        let bytes_mean = (f64::from(snow[0]) + ROCK[0]) / 2.0;
+        assert!(f64::from(half[0]) > bytes_mean + 5.0, "{half:?}");
+        // A steep vertex of a planet: rock on land, the sea floor keeps the sea's colour.
+        let planet = crate::export::test_planet();
+        let params = crate::params::Params::default();
+        let mesh = &planet.mesh;
+        let land = (0..mesh.vertices.len())
+            .find(|&v| mesh.vertices[v].flags.intersects(crate::mesh::VertexFlags::CONTINENT))
+            .unwrap();
+        let sea = (0..mesh.vertices.len()).find(|&v| mesh.vertices[v].flags == crate::mesh::VertexFlags::SEA).unwrap();
+        for (v, rock) in [(land, true), (sea, false)] {
+            let up = mesh.pos(v as u32).normalize();
+            let side = up.any_orthonormal_vector();
+            assert_eq!(surface_colour(mesh, &params, v, up), vertex_colour(mesh, &params, v));
+            let cliff = surface_colour(mesh, &params, v, (up + 3.0 * side).normalize());
+            assert_eq!(close(cliff, ROCK, 0), rock, "vertex {v}: {cliff:?}");
+        }
     }
 
     #[test]

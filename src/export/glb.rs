@@ -10,7 +10,7 @@
 //! all in the default scene), plain or quantized and meshopt-compressed ([`Compression`],
 //! `glb_pack.rs`); [`planet_glb`] uses it for the base mesh.
 
-use super::climate::vertex_colour;
+use super::climate::surface_colour;
 pub use super::glb_pack::Compression;
 use super::glb_pack::{
     filter_positions, meshopt_stream, octahedral_normals, position_step_limit, quantize_positions, shortest_edge,
@@ -123,8 +123,8 @@ pub fn terrain_mesh_with_normals(
         colors: (0..vertices.len())
             .into_par_iter()
             // A river vertex is coloured as its land: its water, as wide as its channel, is the
-            // water surface's (a coarse face beside a river is not a river).
-            .map(|v| linear_rgba(vertex_colour(mesh, params, v), 255))
+            // water surface's (a coarse face beside a river is not a river). Steep land is rock.
+            .map(|v| linear_rgba(surface_colour(mesh, params, v, normals[v]), 255))
             .collect(),
         indices: triangles.par_iter().flat_map_iter(|t| *t).collect(),
         lines: false,

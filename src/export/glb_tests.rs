@@ -268,4 +268,14 @@ fn vertex_colours_are_linear() {
         v.ground - params.sea_level_m,
     );
     assert_eq!(terrain_mesh(&planet.mesh, &params, None).colors[river], linear_rgba(srgb, 255));
+    // A view or tile colours steep land as bare rock (`climate::on_slope`), from its normals.
+    let triangles = planet.mesh.triangles();
+    let mut normals: Vec<glam::DVec3> = planet.mesh.vertices.iter().map(|v| v.p().normalize()).collect();
+    let flat = terrain_mesh_with_normals(&planet.mesh, &params, None, &triangles, &normals).colors[land];
+    let up = normals[land];
+    normals[land] = (up + 2.0 * up.any_orthonormal_vector()).normalize();
+    let steep = terrain_mesh_with_normals(&planet.mesh, &params, None, &triangles, &normals).colors[land];
+    let rock = crate::export::climate::on_slope(srgb, 0.0);
+    assert_eq!(steep, linear_rgba(rock, 255));
+    assert_ne!(flat, steep);
 }

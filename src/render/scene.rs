@@ -72,6 +72,8 @@ pub struct FrameUniforms {
     pub sun: [f32; 4],
     pub lookup: [f32; 4],
     pub sky: [f32; 4],
+    /// Bare rock on steep land: its colour in linear light (xyz).
+    pub rock: [f32; 4],
 }
 
 /// Vertex and index data of a mesh for one camera.
@@ -172,7 +174,15 @@ pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene 
             // The depth at which the water ramp texture (built from `water_colour`) ends.
             crate::export::climate::DEEPEST_M as f32,
         ],
-        sky: [SKY_M as f32, crate::export::climate::TEXTURE_MAX_PRECIP_MM as f32, 0.0, 0.0],
+        sky: {
+            // The cosines of the slopes between which land turns to bare rock.
+            let [gentle, steep] = crate::export::climate::BARE_ROCK_SLOPE_DEG.map(|d| d.to_radians().cos() as f32);
+            [SKY_M as f32, crate::export::climate::TEXTURE_MAX_PRECIP_MM as f32, steep, gentle]
+        },
+        rock: {
+            let [r, g, b] = crate::export::climate::rock_linear().map(|c| c as f32);
+            [r, g, b, 0.0]
+        },
     };
     Scene { vertices, terrain, water, rivers: river_lines(mesh, cam), frame }
 }
@@ -229,6 +239,6 @@ mod tests {
         }
         assert!(planet.mesh.precipitation.is_some(), "a built planet carries its climate");
         assert_eq!(std::mem::size_of::<RenderVertex>(), 52);
-        assert_eq!(std::mem::size_of::<FrameUniforms>(), 176);
+        assert_eq!(std::mem::size_of::<FrameUniforms>(), 192);
     }
 }
