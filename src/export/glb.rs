@@ -256,6 +256,30 @@ impl<'a> Layout<'a> {
     }
 }
 
+/// Drops the values gltf-json writes although they are glTF's defaults (an opaque, one-sided,
+/// unlit-by-emission material of white base colour: ~100 bytes a material) and writes the
+/// roughness as the decimal it was set from rather than its `f32` (0.8999999761581421).
+fn trim_materials(value: &mut serde_json::Value) {
+    use serde_json::json;
+    let Some(materials) = value.get_mut("materials").and_then(|m| m.as_array_mut()) else { return };
+    for m in materials.iter_mut().filter_map(|m| m.as_object_mut()) {
+        for (key, default) in
+            [("emissiveFactor", json!([0.0, 0.0, 0.0])), ("doubleSided", json!(false)), ("alphaMode", json!("OPAQUE"))]
+        {
+            if m.get(key) == Some(&default) {
+                m.remove(key);
+            }
+        }
+        let Some(pbr) = m.get_mut("pbrMetallicRoughness").and_then(|p| p.as_object_mut()) else { continue };
+        if pbr.get("baseColorFactor") == Some(&json!([1.0, 1.0, 1.0, 1.0])) {
+            pbr.remove("baseColorFactor");
+        }
+        if let Some(r) = pbr.get("roughnessFactor").and_then(|r| r.as_f64()) {
+            pbr.insert("roughnessFactor".into(), json!((r * 1e6).round() / 1e6));
+        }
+    }
+}
+
 fn accessor(
     view: json::Index<json::buffer::View>,
     count: usize,
@@ -348,7 +372,7 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
     for m in meshes.iter().filter(|m| !m.positions.is_empty() && !m.indices.is_empty()) {
         let n = m.positions.len();
         let mut attributes = BTreeMap::new();
-        let limit = position_step_limit(shortest_edge(&m.positions, &m.indices, m.lines));
+        let limit = if packed { position_step_limit(shortest_edge(&m.positions, &m.indices, m.lines)) } else { 0.0 };
         let quantized = if packed { quantize_positions(&m.positions, limit) } else { None };
         let filtered = if packed && quantized.is_none() { filter_positions(&m.positions, limit) } else { None };
         let (position, transform) = match (quantized, filtered) {
@@ -481,6 +505,7 @@ pub fn encode_glb(meshes: &[GlbMesh], compression: Compression) -> Result<Vec<u8
             value["nodes"][i]["scale"] = serde_json::json!([s, s, s]);
         }
     }
+    trim_materials(&mut value);
     if packed && bin_len > 0 {
         value["buffers"][1]["extensions"] = serde_json::json!({ MESHOPT: { "fallback": true } });
         for (i, (((offset, len), kind), data)) in streams.iter().zip(&layout.kinds).zip(&layout.views).enumerate() {

@@ -71,6 +71,16 @@ fn planet_glb_is_valid_and_matches_the_mesh() {
     assert_eq!(p.root.asset.version, "2.0");
     assert_eq!(p.root.meshes.len(), 1);
     assert_eq!(p.root.buffers[0].byte_length.0 as usize, p.bin.len());
+    // Materials carry only what differs from glTF's defaults, which readers fill back in.
+    let material = &p.value["materials"][0];
+    for key in ["emissiveFactor", "doubleSided", "alphaMode"] {
+        assert!(material.get(key).is_none(), "{key} is a default: {material}");
+    }
+    assert!(material["pbrMetallicRoughness"].get("baseColorFactor").is_none());
+    assert_eq!(material["pbrMetallicRoughness"]["roughnessFactor"], 0.9);
+    let m = &p.root.materials[0];
+    assert_eq!((m.alpha_mode, m.double_sided), (Valid(json::material::AlphaMode::Opaque), false));
+    assert_eq!(m.pbr_metallic_roughness.base_color_factor.0, [1.0; 4]);
     let prim = &p.root.meshes[0].primitives[0];
     assert_eq!(prim.mode, Valid(json::mesh::Mode::Triangles));
     let n = mesh.vertices.len();
