@@ -269,7 +269,8 @@ pub fn rock_linear() -> [f64; 3] {
     ROCK.map(|c| srgb_to_linear(c / 255.0))
 }
 
-fn srgb_to_linear(c: f64) -> f64 {
+/// An sRGB component (0-1) in linear light.
+pub(crate) fn srgb_to_linear(c: f64) -> f64 {
     if c <= 0.04045 {
         c / 12.92
     } else {

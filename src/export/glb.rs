@@ -138,11 +138,7 @@ pub fn terrain_mesh_with_normals(
 pub fn linear_rgba(rgb: [u8; 3], alpha: u8) -> [u8; 4] {
     static LINEAR: std::sync::OnceLock<[u8; 256]> = std::sync::OnceLock::new();
     let table = LINEAR.get_or_init(|| {
-        std::array::from_fn(|i| {
-            let c = i as f64 / 255.0;
-            let l = if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) };
-            (l * 255.0).round() as u8
-        })
+        std::array::from_fn(|i| (super::climate::srgb_to_linear(i as f64 / 255.0) * 255.0).round() as u8)
     });
     [table[rgb[0] as usize], table[rgb[1] as usize], table[rgb[2] as usize], alpha]
 }
