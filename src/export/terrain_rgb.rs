@@ -9,9 +9,10 @@
 //! and a ring of two more around it), from the planet refined for cells of [`REFINE_PIXELS`]
 //! with the split rule of views and tiles; each pixel is the Catmull-Rom cubic through its
 //! 4 x 4 nearest samples, clamped to the range of the nearest 2 x 2 (no ringing at a coast).
-//! So a tile shows the relief down to about 1/50 of its side (the next zoom twice finer) for a
-//! 25th of the splits of a surface refined to its pixels: a cold tile in 9-16 ms instead of
-//! 0.3-0.5 s (BENCHMARKS.md). Against a DEM of the tile refined to its pixels, r 0.95-0.997.
+//! So a tile shows the relief down to about 1/40 of its side (the next zoom twice finer) for a
+//! 36th of the splits of a surface refined to its pixels: a cold tile in 10-20 ms (on the
+//! machines of BENCHMARKS.md) instead of 0.3-0.5 s. Against a DEM of the tile refined to its
+//! pixels, r 0.945-0.997.
 //! The two halves of the grid are refined in parallel, each [`MARGIN`] samples past its rows:
 //! the halves, and neighbouring tiles (whose ring samples are each other's), sample alike —
 //! over 40 tiles of zooms 4-12 of the Earth DEM, margins of 1 to 16 samples gave the same
@@ -251,9 +252,10 @@ pub const STEP: u32 = 4;
 /// Samples along a tile's side.
 pub const SAMPLES: u32 = TILE_SIZE / STEP;
 /// Pixels per cell of the surface the samples are taken from: triangles' legs of up to about
-/// two cells (10 pixels). At 4 (a cell per sample) a tile took 9-15 ms, for r 0.965 instead of
-/// 0.950 against a DEM refined to the pixels (the zoom-4 tile of the tests).
-pub const REFINE_PIXELS: u32 = 5;
+/// two cells (12 pixels). Against a DEM refined to the pixels (the zoom-4 tile of the tests):
+/// r 0.965 at 4 (a cell per sample), 0.9505 at 5, 0.945 at 6, 0.937 at 7; 6 makes a quarter
+/// fewer splits than 5 (about 4,800 instead of 6,500 a half tile on the Earth DEM).
+pub const REFINE_PIXELS: u32 = 6;
 /// Samples outside the tile on each side that its pixels' cubics reach.
 const RING: u32 = 2;
 /// Samples past the ring over which the surface is refined too (see [`tile_heights`]).

@@ -40,6 +40,10 @@ pub const NONE: u32 = u32::MAX;
 /// Marks an entity removed by a collapse until the buffers are compacted.
 pub(crate) const DEAD: u32 = NONE - 1;
 
+/// Most faces [`Mesh::edge_between`] walks around a vertex (a bisection mesh's vertices have
+/// at most a few dozen).
+const MAX_WALK: usize = 256;
+
 /// One vertex (Table 3, "active vertices"): 56 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::NoUninit, bytemuck::AnyBitPattern)]
@@ -216,6 +220,37 @@ impl Mesh {
         let e0 = &self.edges[face.e[0] as usize];
         let [v1, v2] = if e0.f[0] == f { e0.v } else { [e0.v[1], e0.v[0]] };
         [self.edges[face.e[1] as usize].other(v2), v1, v2]
+    }
+
+    /// The edge joining vertices `a` and `b`, if there is one: found by walking the faces
+    /// around `a` from its edge link (at most [`MAX_WALK`] of them), without an index.
+    pub fn edge_between(&self, a: u32, b: u32) -> Option<u32> {
+        let start = self.vertices[a as usize].edge;
+        if start >= DEAD {
+            return None;
+        }
+        let (mut e, mut f) = (start, self.edges[start as usize].f[0]);
+        for _ in 0..MAX_WALK {
+            let edge = &self.edges[e as usize];
+            if edge.other(a) == b {
+                return Some(e);
+            }
+            // The face's other edge at `a`, then the face across it.
+            let face = &self.faces[f as usize];
+            let mut next = NONE;
+            for x in face.e {
+                if x != e && self.edges[x as usize].v.contains(&a) {
+                    next = x;
+                    break;
+                }
+            }
+            if next == NONE || next == start {
+                return None;
+            }
+            f = self.edges[next as usize].other_face(f);
+            e = next;
+        }
+        None
     }
 
     /// Kind of face `f`, as its refinement edge keeps it.

@@ -252,3 +252,33 @@ fn validation_finds_split_levels_out_of_order_pieces_and_twin_edges() {
     // An empty mesh is refused, not a panic.
     assert!(Mesh::default().validate().unwrap_err().contains("Euler"));
 }
+
+/// `edge_between` finds every edge from either end, and nothing between vertices that share
+/// none: on a base mesh and after splits (which rewrite edge links and face links).
+#[test]
+fn edge_between_finds_every_edge_and_only_edges() {
+    let mut m = sphere(800);
+    let mut make = |m: &Mesh, site: &SplitSite| (midpoint_vertex(m, site), [EdgeKind::Sea; 4]);
+    for e in (0..m.edges.len() as u32).step_by(37) {
+        m.refine_edge(e, &mut make);
+    }
+    m.validate().unwrap();
+    let mut adjacent = std::collections::HashSet::new();
+    for (i, e) in m.edges.iter().enumerate() {
+        let [a, b] = e.v;
+        assert_eq!(m.edge_between(a, b), Some(i as u32), "edge {i} from {a}");
+        assert_eq!(m.edge_between(b, a), Some(i as u32), "edge {i} from {b}");
+        adjacent.insert((a.min(b), a.max(b)));
+    }
+    let n = m.vertices.len() as u32;
+    let mut absent = 0;
+    for a in (0..n).step_by(7) {
+        for b in (0..n).step_by(11) {
+            if a != b && !adjacent.contains(&(a.min(b), a.max(b))) {
+                assert_eq!(m.edge_between(a, b), None, "{a} and {b} share no edge");
+                absent += 1;
+            }
+        }
+    }
+    assert!(absent > 1000);
+}

@@ -33,13 +33,11 @@ pub struct NotBisected {
     pub faces: usize,
 }
 
-/// Which edges of the tree the base mesh has split, and the base mesh's unsplit edges.
+/// Which edges of the tree the base mesh has split.
 #[derive(Clone, Debug, Default)]
 pub struct BaseTree {
     /// The vertex made by splitting each split edge, by the edge's ends.
     midpoints: HashMap<u64, u32>,
-    /// The base mesh's edges, by their ends.
-    edges: HashMap<u64, u32>,
 }
 
 impl BaseTree {
@@ -68,13 +66,12 @@ impl BaseTree {
         if faces != 8 || midpoints.len() + 6 != base.vertices.len() {
             return Err(NotBisected { faces });
         }
-        let edges = base.edges.iter().enumerate().map(|(i, e)| (pair(e.v[0], e.v[1]), i as u32)).collect();
-        Ok(BaseTree { midpoints, edges })
+        Ok(BaseTree { midpoints })
     }
 
     /// Bytes the maps hold (estimate: key, value and hash-table overhead per entry).
     pub fn bytes(&self) -> usize {
-        (self.midpoints.capacity() + self.edges.capacity()) * 24
+        self.midpoints.capacity() * 24
     }
 
     /// Whether the base mesh has split edge `(a, b)`.
@@ -104,9 +101,10 @@ pub struct Refiner<'a> {
     /// Buffers to copy the base mesh into on the first split (see [`Refiner::with_spare`]).
     spare: Option<Mesh>,
     midpoints: HashMap<u64, u32>,
-    edges: HashMap<u64, u32>,
     /// Base-mesh vertices, edges and faces the splits rewrote (see [`Refiner::take_buffers`]).
     touched: Touched,
+    /// The sites of the last [`Refiner::midpoint`]'s splits (kept for its buffer).
+    sites: Vec<SplitSite>,
 }
 
 /// Indices of the base mesh's entities that splits rewrote: a split rewrites its edge, the two
@@ -127,8 +125,8 @@ impl<'a> Refiner<'a> {
             refined: None,
             spare: None,
             midpoints: HashMap::default(),
-            edges: HashMap::default(),
             touched: Touched::default(),
+            sites: Vec::new(),
         }
     }
 
@@ -161,10 +159,9 @@ impl<'a> Refiner<'a> {
         Some(mesh)
     }
 
-    /// Makes room for about `splits` more splits (their midpoints and edges).
+    /// Makes room for about `splits` more splits (their midpoints).
     pub fn reserve(&mut self, splits: usize) {
         self.midpoints.reserve(splits);
-        self.edges.reserve(4 * splits);
     }
 
     /// The mesh the node vertices index: the base mesh plus the splits made so far.
@@ -180,25 +177,26 @@ impl<'a> Refiner<'a> {
     /// The vertex that splits edge `(a, b)` of the tree, splitting it (with its bisection
     /// closure) if no split has yet.
     pub fn midpoint(&mut self, a: u32, b: u32) -> u32 {
-        let key = pair(a, b);
-        // Only edges between base-mesh vertices may be the base's (a large map: skipped when
-        // it cannot hold the edge).
-        let n = self.base.vertices.len() as u32;
-        let base = if a < n && b < n { self.tree.midpoints.get(&key) } else { None };
-        if let Some(&m) = base.or_else(|| self.midpoints.get(&key)) {
-            return m;
-        }
-        let e = *self
-            .edges
-            .get(&key)
-            .or_else(|| self.tree.edges.get(&key))
-            .expect("an unsplit edge of the tree is an edge of the mesh");
+        // An edge still in the mesh is unsplit (found around `a`, without a hash map's cache
+        // misses); a tree edge that is not was split, by the base mesh or by this refiner.
+        let Some(e) = self.mesh().edge_between(a, b) else {
+            let key = pair(a, b);
+            // Only edges between base-mesh vertices may be the base's.
+            let n = self.base.vertices.len() as u32;
+            let base = if a < n && b < n { self.tree.midpoints.get(&key) } else { None };
+            return *base
+                .or_else(|| self.midpoints.get(&key))
+                .expect("a tree edge is in the mesh or split into a known vertex");
+        };
         let params = self.params;
-        let guide = self.base.guide.clone();
-        let guide = guide.as_deref();
-        let (base, spare) = (self.base, &mut self.spare);
+        // Borrowed from the base mesh (not cloned: an `Arc`'s count shared by the threads that
+        // refine in parallel would bounce between their caches on every split).
+        let base: &'a Mesh = self.base;
+        let guide = base.guide.as_deref();
+        let spare = &mut self.spare;
         let mesh = self.refined.get_or_insert_with(|| spare.take().unwrap_or_else(|| base.clone()));
-        let mut sites: Vec<SplitSite> = Vec::new();
+        let sites = &mut self.sites;
+        sites.clear();
         let touched = &mut self.touched;
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
@@ -209,15 +207,11 @@ impl<'a> Refiner<'a> {
             }
             split_vertex(&crate::mesh::Diamond::new(m, site), params, guide)
         });
-        for (site, split) in sites.iter().zip(&splits) {
-            let m = split.v;
-            self.midpoints.insert(pair(site.a, site.b), m);
-            let [e1, e2, e3, e4] = split.e;
-            for (x, y, edge) in [(site.a, m, e1), (m, site.t, e2), (m, site.b, e3), (m, site.d, e4)] {
-                self.edges.insert(pair(x, y), edge);
-            }
+        for (site, split) in self.sites.iter().zip(&splits) {
+            self.midpoints.insert(pair(site.a, site.b), split.v);
         }
-        self.midpoints[&key]
+        // The edge asked for is split last, after the edges its closure needed first.
+        splits.last().expect("refining an edge splits it").v
     }
 
     /// Whether the base mesh splits `node` (a node with a vertex this refiner made lies below
