@@ -27,6 +27,8 @@ pub enum InputError {
     Params(#[from] ParamError),
     #[error("map: {0}")]
     Map(#[from] MapError),
+    #[error("precipitation: {0}")]
+    Precipitation(MapError),
 }
 
 /// Parses `MIN_M,MAX_M`.
@@ -50,13 +52,25 @@ pub fn load_map(src: &MapSource, limits: &MapLimits) -> Result<Map, InputError> 
     Ok(Map::decode(&bytes, kind, src.range_m, src.bounds, limits)?)
 }
 
+/// Reads and checks a precipitation map file ([`crate::maps::decode_precipitation`]; the
+/// source's range is in mm per year, its kind unused).
+pub fn load_precipitation(src: &MapSource, limits: &MapLimits) -> Result<Map, InputError> {
+    let bytes = std::fs::read(&src.path).map_err(|source| InputError::Read { path: src.path.clone(), source })?;
+    crate::maps::decode_precipitation(&bytes, src.range_m, src.bounds, limits).map_err(InputError::Precipitation)
+}
+
 /// Reads a `{"seed", "params"}` file.
 pub fn load_request(path: &Path) -> Result<PlanetRequest, InputError> {
     let text = std::fs::read_to_string(path).map_err(|source| InputError::Read { path: path.to_path_buf(), source })?;
     Ok(PlanetRequest::from_json(&text)?)
 }
 
-/// Assembles the spec from a request and an optional map.
-pub fn spec(req: PlanetRequest, map: Option<Map>) -> PlanetSpec {
-    PlanetSpec { seed: req.seed, params: req.params, map: map.map(Arc::new) }
+/// Assembles the spec from a request, an optional map and an optional precipitation map.
+pub fn spec(req: PlanetRequest, map: Option<Map>, precipitation: Option<Map>) -> PlanetSpec {
+    PlanetSpec {
+        seed: req.seed,
+        params: req.params,
+        map: map.map(Arc::new),
+        precipitation: precipitation.map(Arc::new),
+    }
 }

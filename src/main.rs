@@ -55,6 +55,18 @@ struct PlanetArgs {
     /// shore outside its bounds).
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
     map_bounds: Option<GeoBounds>,
+    /// Mean annual precipitation in place of the climate model's (rivers' discharge, lakes,
+    /// ground colours): single-band GeoTIFF in mm per year, or 8/16-bit PNG with
+    /// --precipitation-range. Equirectangular, row 0 = north edge; nodata keeps the model's.
+    #[arg(long)]
+    precipitation: Option<PathBuf>,
+    /// Millimetres per year of the darkest and brightest PNG precipitation values, "MIN_MM,MAX_MM".
+    #[arg(long, value_parser = parse_range, allow_hyphen_values = true)]
+    precipitation_range: Option<(f64, f64)>,
+    /// Bounds of a regional PNG precipitation map, "WEST,SOUTH,EAST,NORTH" [default: the whole
+    /// globe; GeoTIFFs carry their own]. Outside them the model's precipitation.
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    precipitation_bounds: Option<GeoBounds>,
     /// JSON file {"seed": N, "params": {...}} with the planet parameters (paper Table 2).
     #[arg(long)]
     params: Option<PathBuf>,
@@ -450,7 +462,19 @@ impl PlanetArgs {
             }
             None => None,
         };
-        Ok(input::spec(req, map))
+        let precipitation = match &self.precipitation {
+            Some(path) => {
+                let src = MapSource {
+                    path: path.clone(),
+                    kind: None,
+                    range_m: self.precipitation_range,
+                    bounds: self.precipitation_bounds,
+                };
+                Some(input::load_precipitation(&src, &MapLimits::default())?)
+            }
+            None => None,
+        };
+        Ok(input::spec(req, map, precipitation))
     }
 }
 

@@ -181,6 +181,12 @@ fn bad_input_is_refused_with_exit_code_2() {
         (vec!["--params".into(), s(&params)], "land_percent"),
         (vec!["--params".into(), s(&unknown)], "radius"),
         (vec!["--faces".into(), "2".into()], "base_faces"),
+        (vec!["--precipitation".into(), s(&html)], "precipitation: map is not a PNG or TIFF"),
+        (vec!["--precipitation".into(), s(&all_land)], "precipitation: a precipitation PNG needs a range"),
+        (
+            vec!["--precipitation".into(), s(&all_land), "--precipitation-range".into(), "-900,-100".into()],
+            "precipitation must lie in 0..=30000",
+        ),
     ];
     let out = dir.join("out");
     for (args, needle) in cases {
@@ -448,4 +454,26 @@ fn write_failures_exit_1_and_bad_input_2() {
     assert!(!dir.join("t").exists());
     let help = String::from_utf8(run(&["--help"]).stdout).unwrap();
     assert!(help.contains("Exit status: 0 done; 2 input refused"), "{help}");
+}
+
+/// A precipitation map replaces the climate model's rain: its rivers carry what it gives.
+#[test]
+fn a_precipitation_map_sets_the_rivers_discharge() {
+    let dir = scratch("precipitation");
+    let rain = dir.join("rain.png");
+    image::GrayImage::from_pixel(36, 18, image::Luma([255])).save(&rain).unwrap();
+    let total = |extra: &[&str], name: &str| -> f64 {
+        let out = dir.join(name);
+        let mut args = vec!["generate", "--faces", "2000", "--seed", "3", "--raster-width", "64", "--out"];
+        args.push(out.to_str().unwrap());
+        args.extend_from_slice(extra);
+        let o = run(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let json: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(out.join("rivers.geojson")).unwrap()).unwrap();
+        json["features"].as_array().unwrap().iter().filter_map(|f| f["properties"]["discharge_m3s"].as_f64()).sum()
+    };
+    let model = total(&[], "model");
+    let wet = total(&["--precipitation", rain.to_str().unwrap(), "--precipitation-range", "0,5000"], "wet");
+    assert!(model > 0.0 && wet > 2.0 * model, "model {model} m³/s, 5,000 mm everywhere {wet}");
 }

@@ -72,7 +72,12 @@ async fn tilesets_and_tiles_are_served_and_resolve() {
     }
 
     // The server's bytes are the library's for the same planet.
-    let spec = PlanetSpec { seed: 31, params: Params { base_faces: 2000, ..Params::default() }, map: None };
+    let spec = PlanetSpec {
+        seed: 31,
+        params: Params { base_faces: 2000, ..Params::default() },
+        map: None,
+        precipitation: None,
+    };
     let planet = Arc::new(build_planet(&spec, &mut |_, _| {}).unwrap());
     let tiles = PlanetTiles::new(planet, spec.params.clone()).unwrap();
     let key = TileKey::root(2).child(3).child(1);

@@ -9,7 +9,12 @@ const R: f64 = 6_371_000.0;
 fn base() -> &'static crate::planet::Planet {
     static P: OnceLock<crate::planet::Planet> = OnceLock::new();
     P.get_or_init(|| {
-        let spec = PlanetSpec { seed: 3, params: Params { base_faces: 2000, ..Params::paper() }, map: None };
+        let spec = PlanetSpec {
+            seed: 3,
+            params: Params { base_faces: 2000, ..Params::paper() },
+            map: None,
+            precipitation: None,
+        };
         build_planet(&spec, &mut |_, _| {}).unwrap()
     })
 }
@@ -260,7 +265,8 @@ fn camera_over(m: &Mesh, v: u32, height: f64, ahead: f64) -> Camera {
 #[test]
 fn terrain_invariants_hold_over_rivers_of_many_planets() {
     for seed in 1..=8 {
-        let spec = PlanetSpec { seed, params: Params { base_faces: 2000, ..Params::paper() }, map: None };
+        let spec =
+            PlanetSpec { seed, params: Params { base_faces: 2000, ..Params::paper() }, map: None, precipitation: None };
         let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
         let m = &planet.mesh;
         // The river vertex of median altitude: a view over a river's middle course.

@@ -72,6 +72,7 @@ pub(crate) fn test_planet() -> &'static crate::planet::Planet {
             seed: 1,
             params: crate::params::Params { base_faces: 2000, ..Default::default() },
             map: None,
+            precipitation: None,
         };
         crate::planet::build_planet(&spec, &mut |_, _| {}).expect("test planet builds")
     })

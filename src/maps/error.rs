@@ -63,6 +63,11 @@ pub enum MapError {
     #[error("map kind must be \"continents\" or \"elevation\" (got {0:?})")]
     UnknownKind(String),
 
+    /// A value no map of its kind may hold (precipitation below 0 or above
+    /// [`super::MAX_PRECIPITATION_MM`]), or no valid value at all.
+    #[error("{0}")]
+    OutOfRange(String),
+
     /// `map_kind` names a kind the file's format cannot hold (a GeoTIFF as continents).
     #[error("map kind {kind} does not fit the file: {hint}")]
     KindMismatch { kind: &'static str, hint: &'static str },
@@ -86,6 +91,7 @@ impl MapError {
             MapError::InvalidGeoreference(_) => "invalid_georeference",
             MapError::UnknownKind(_) => "invalid_map_kind",
             MapError::KindMismatch { .. } => "wrong_map_kind",
+            MapError::OutOfRange(_) => "value_out_of_range",
         }
     }
 

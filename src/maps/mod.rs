@@ -15,6 +15,7 @@ mod error;
 mod geotiff;
 mod margin;
 mod png;
+mod precipitation;
 #[cfg(test)]
 mod test_support;
 #[cfg(test)]
@@ -32,6 +33,7 @@ use serde::{Deserialize, Serialize};
 pub use bounds::GeoBounds;
 pub use error::MapError;
 pub use margin::SHORE_RIM_M;
+pub use precipitation::{decode_precipitation, MAX_PRECIPITATION_MM};
 
 /// Water below sea level that reaches this deep is sea even where the map lost its strait to
 /// the ocean (the Black Sea's Bosporus at 20 km pixels). No land depression is as deep: the

@@ -269,6 +269,35 @@ impl Climate {
         Climate::new(&cells)
     }
 
+    /// The same climate with the precipitation of a user's map (mm/yr, [`crate::maps::decode_precipitation`])
+    /// wherever it covers a grid cell: the mean of up to 16 x 16 samples over the cell, one per
+    /// map pixel or more; cells outside the map's bounds or under its nodata keep the model's.
+    pub fn with_precipitation(mut self, map: Option<&crate::maps::Map>) -> Climate {
+        let Some(map) = map else { return self };
+        let step = 1.0 / CELLS_PER_DEG as f64;
+        let (dx, dy) = map.pixel_size_deg();
+        let n = ((step / dx.min(dy)).ceil() as usize).clamp(2, 16);
+        for (i, p) in self.precip_mm.iter_mut().enumerate() {
+            let (north, west) = (90.0 - (i / self.width) as f64 * step, -180.0 + (i % self.width) as f64 * step);
+            let (mut sum, mut count) = (0.0f64, 0u32);
+            for a in 0..n {
+                for b in 0..n {
+                    let lat = north - (a as f64 + 0.5) * step / n as f64;
+                    let lon = west + (b as f64 + 0.5) * step / n as f64;
+                    if let Some(v) = map.sample(lat, lon) {
+                        sum += f64::from(v);
+                        count += 1;
+                    }
+                }
+            }
+            // Cells the map covers for the most part take its mean.
+            if 2 * count as usize >= n * n {
+                *p = (sum / f64::from(count)) as f32;
+            }
+        }
+        self
+    }
+
     /// Precipitation and potential evaporation (mm/yr) at every vertex of `mesh`, at
     /// `altitude(v)` metres above sea level.
     pub fn at_vertices(&self, mesh: &Mesh, altitude: impl Fn(usize) -> f64) -> Vec<(f64, f64)> {
@@ -465,5 +494,27 @@ mod tests {
         assert!(far < 0.5 * c.precip_at(45.0, 1.5), "interior {far}");
         // Trades at 15°: the same coast is downwind of the continent.
         assert!(c.precip_at(15.0, 118.5) > c.precip_at(15.0, 1.5));
+    }
+
+    #[test]
+    fn a_precipitation_map_replaces_the_models_rain_where_it_covers_the_planet() {
+        use crate::maps::{GeoBounds, Map, MapKind};
+        let cells: Vec<(bool, f64)> =
+            (0..WIDTH * HEIGHT).map(|i| ((i % WIDTH) < WIDTH / 2 && (20..160).contains(&(i / WIDTH)), 300.0)).collect();
+        let model = Climate::new(&cells);
+        // A regional map over 10-30° E, 0-20° N: 3,000 mm in its west half, nodata in its east.
+        let bounds = GeoBounds { west: -170.0, south: 0.0, east: -150.0, north: 20.0 };
+        let values: Vec<f32> = (0..40 * 40).map(|i| if i % 40 < 20 { 3000.0 } else { f32::NAN }).collect();
+        let map = Map::from_values(MapKind::Elevation, 40, 40, bounds, values).unwrap();
+        let c = model.clone().with_precipitation(Some(&map));
+        assert_eq!(c.precip_at(10.5, -165.5), 3000.0);
+        assert_eq!(c.precip_at(0.5, -160.5), 3000.0);
+        // Nodata, and cells outside the bounds, keep the model's rain.
+        assert_eq!(c.precip_at(10.5, -155.5), model.precip_at(10.5, -155.5));
+        assert_eq!(c.precip_at(25.5, -165.5), model.precip_at(25.5, -165.5));
+        assert_eq!(c.precip_at(-0.5, -165.5), model.precip_at(-0.5, -165.5));
+        assert_ne!(model.precip_at(10.5, -165.5), 3000.0);
+        // No map: the model's.
+        assert_eq!(model.clone().with_precipitation(None).precip_mm, model.precip_mm);
     }
 }

@@ -27,6 +27,9 @@ pub struct PlanetSpec {
     pub seed: u64,
     pub params: Params,
     pub map: Option<Arc<Map>>,
+    /// Mean annual precipitation (mm/yr, [`crate::maps::decode_precipitation`]) in place of the
+    /// climate model's where the map covers the planet.
+    pub precipitation: Option<Arc<Map>>,
 }
 
 /// A built base mesh with its river network and statistics.
@@ -208,13 +211,13 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         let k = f64::from(m.width / filtered.width);
         filtered.with_shore((shore_px / k).ceil() as u32).unwrap_or(filtered)
     });
-    let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.seed);
+    let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.precipitation.as_deref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     // Splits below the base mesh follow an elevation map where it resolves them.
     mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
-    let (water, precipitation) = water_budget(&mesh, p.sea_level_m);
+    let (water, precipitation) = water_budget(&mesh, p.sea_level_m, spec.precipitation.as_deref());
     mesh.precipitation = precipitation.map(std::sync::Arc::new);
     // Channel widths for the water surface, from the discharge of the climate's runoff.
     mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &water)).map(std::sync::Arc::new);
@@ -244,10 +247,14 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
 
 /// Runoff (mm/yr) of each land vertex and what a river's floodplain loses there, in the
 /// climate of the built mesh, and the climate's precipitation for the colours.
-fn water_budget(mesh: &Mesh, sea: f64) -> (network::WaterBudget, Option<crate::mesh::precipitation::Precipitation>) {
+fn water_budget(
+    mesh: &Mesh,
+    sea: f64,
+    rain: Option<&Map>,
+) -> (network::WaterBudget, Option<crate::mesh::precipitation::Precipitation>) {
     let land = |v: usize| mesh.vertices[v].flags.is_inland() || mesh.vertices[v].flags.contains(VertexFlags::COAST);
     let altitude = |v: usize| mesh.vertices[v].ground - sea;
-    let c = climate::Climate::of_mesh(mesh, land, altitude);
+    let c = climate::Climate::of_mesh(mesh, land, altitude).with_precipitation(rain);
     let at = c.at_vertices(mesh, altitude);
     let runoff_mm = at
         .iter()

@@ -76,11 +76,17 @@ fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at
 /// Water each vertex yields as runoff from land (m³/yr), loses as open water, evaporation
 /// less precipitation (m³/yr), and a river's floodplain loses there (mm/yr,
 /// [`super::climate::channel_loss_mm`]), in the planet's climate ([`super::climate`]); `height`
-/// is its altitude (m relative to sea level).
-fn water_balance(mesh: &Mesh, inland: &[bool], coast: &[bool], height: &[f64], area: &[f64]) -> [Vec<f64>; 3] {
+/// is its altitude (m relative to sea level); `rain` a precipitation map in place of the model's.
+fn water_balance(
+    mesh: &Mesh,
+    (inland, coast): (&[bool], &[bool]),
+    height: &[f64],
+    area: &[f64],
+    rain: Option<&Map>,
+) -> [Vec<f64>; 3] {
     use super::climate::{channel_loss_mm, runoff_mm, Climate};
     let is_land = |v: usize| inland[v] || coast[v];
-    let climate = Climate::of_mesh(mesh, is_land, |v| height[v]);
+    let climate = Climate::of_mesh(mesh, is_land, |v| height[v]).with_precipitation(rain);
     let mut runoff = vec![0.0f64; area.len()];
     let mut loss = vec![0.0f64; area.len()];
     let mut channel = vec![0.0f64; area.len()];
@@ -139,8 +145,15 @@ fn relief_at(relief: Option<&Map>, mesh: &Mesh, v: u32) -> Option<f64> {
     relief.and_then(|m| m.sample(lat, lon)).map(f64::from).filter(|x| x.is_finite())
 }
 
-/// Builds the river networks and assigns every altitude of the base mesh.
-pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed: u64) -> RiverReport {
+/// Builds the river networks and assigns every altitude of the base mesh; `rain`, a
+/// precipitation map, replaces the climate model's where it covers the planet.
+pub fn build_rivers(
+    mesh: &mut Mesh,
+    params: &Params,
+    relief: Option<&Map>,
+    rain: Option<&Map>,
+    seed: u64,
+) -> RiverReport {
     let adj = mesh.adjacency();
     let n = mesh.vertices.len();
     let inland: Vec<bool> = mesh.vertices.iter().map(|v| v.flags.is_inland()).collect();
@@ -261,7 +274,7 @@ pub fn build_rivers(mesh: &mut Mesh, params: &Params, relief: Option<&Map>, seed
         };
         let flood = super::relief::Flood { order: &order, downstream: &downstream, edge_len: &lens, ..terrain };
         let mut dep = super::relief::depressions(&flood);
-        let [runoff, net_loss, channel_loss] = water_balance(mesh, &inland, &coast, &height, &area);
+        let [runoff, net_loss, channel_loss] = water_balance(mesh, (&inland, &coast), &height, &area, rain);
         let terminal = super::basins::terminal_levels(&flood, &mut dep, &runoff, &net_loss, &channel_loss);
         let (outlets, new_order) =
             super::basins::drain_to_pits(&mut downstream, &mut down_edge, &order, &dep, &terminal);

@@ -2,7 +2,8 @@ use super::*;
 use crate::mesh::{EdgeKind, VertexFlags, NONE};
 
 fn planet(seed: u64, faces: u32) -> Planet {
-    let spec = PlanetSpec { seed, params: Params { base_faces: faces, ..Params::default() }, map: None };
+    let spec =
+        PlanetSpec { seed, params: Params { base_faces: faces, ..Params::default() }, map: None, precipitation: None };
     build_planet(&spec, &mut |_, _| {}).unwrap()
 }
 

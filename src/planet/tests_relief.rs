@@ -15,7 +15,7 @@ fn map_file(path: &str) -> Option<Map> {
 
 fn from_map(path: &str) -> Option<Planet> {
     let map = map_file(path)?;
-    let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) };
+    let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)), precipitation: None };
     Some(build_planet(&spec, &mut |_, _| {}).unwrap())
 }
 
@@ -39,13 +39,15 @@ fn the_face_estimate_bounds_the_build() {
     let mut cases = Vec::new();
     for (seed, land_percent, base_faces) in [(7, 29.0, 5000), (8, 60.0, 5000), (9, 5.0, 20_000)] {
         let p = Params { land_percent, base_faces, ..p.clone() };
-        let random = build_planet(&PlanetSpec { seed, params: p.clone(), map: None }, &mut |_, _| {}).unwrap();
+        let random =
+            build_planet(&PlanetSpec { seed, params: p.clone(), map: None, precipitation: None }, &mut |_, _| {})
+                .unwrap();
         cases.push(("random", estimated_faces(&p, None), random.stats.faces));
     }
     if let Ok(bytes) = std::fs::read("maps/earth_landmask_ne10m_1024x512.png") {
         let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
         let estimate = estimated_faces(&p, Some(&map));
-        let spec = PlanetSpec { seed: 42, params: p.clone(), map: Some(Arc::new(map)) };
+        let spec = PlanetSpec { seed: 42, params: p.clone(), map: Some(Arc::new(map)), precipitation: None };
         cases.push(("land mask", estimate, build_planet(&spec, &mut |_, _| {}).unwrap().stats.faces));
     }
     for (name, path, planet) in [
@@ -132,7 +134,7 @@ fn the_earth_dem_at_twice_the_resolution_and_a_regional_dem_keep_their_heights()
 fn a_continent_bitmap_reports_no_fidelity() {
     let bytes = std::fs::read("maps/earth_landmask_ne10m_1024x512.png").unwrap();
     let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
-    let spec = PlanetSpec { seed: 1, params: Params::default(), map: Some(Arc::new(map)) };
+    let spec = PlanetSpec { seed: 1, params: Params::default(), map: Some(Arc::new(map)), precipitation: None };
     let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
     assert!(planet.stats.map_fidelity.is_none() && planet.stats.lakes.is_none());
 }
@@ -324,8 +326,12 @@ fn the_earth_preset_gives_earth_like_land_with_mountain_belts() {
     let Ok(bytes) = std::fs::read("maps/earth_landmask_ne10m_1024x512.png") else { return };
     let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
     let p = Params::default();
-    let bitmap = build_planet(&PlanetSpec { seed: 42, params: p.clone(), map: Some(Arc::new(map)) }, &mut |_, _| {});
-    let random = build_planet(&PlanetSpec { seed: 42, params: p.clone(), map: None }, &mut |_, _| {});
+    let bitmap = build_planet(
+        &PlanetSpec { seed: 42, params: p.clone(), map: Some(Arc::new(map)), precipitation: None },
+        &mut |_, _| {},
+    );
+    let random =
+        build_planet(&PlanetSpec { seed: 42, params: p.clone(), map: None, precipitation: None }, &mut |_, _| {});
     // Earth (ETOPO5 land): median ~440 m, 90th percentile ~2 km, 99th ~4.5 km, 1-2 % above 4 km.
     // Measured: bitmap 579 / 1,407 / 4,350 m, 1.4 %; random 656 / 2,104 / 4,856 m, 2.3 %.
     for planet in [bitmap.unwrap(), random.unwrap()] {
@@ -350,7 +356,7 @@ fn synthetic(w: u32, h: u32, f: impl Fn(f64, f64) -> f32) -> Map {
 }
 
 fn build_map(map: Map) -> Result<Planet, BuildError> {
-    let spec = PlanetSpec { seed: 5, params: Params::default(), map: Some(Arc::new(map)) };
+    let spec = PlanetSpec { seed: 5, params: Params::default(), map: Some(Arc::new(map)), precipitation: None };
     build_planet(&spec, &mut |_, _| {})
 }
 

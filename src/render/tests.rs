@@ -15,7 +15,7 @@ fn earth() -> &'static (Planet, Params) {
             std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_landmask_ne10m_1024x512.png")).unwrap();
         let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
         let params = Params::default();
-        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()) };
+        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()), precipitation: None };
         (build_planet(&spec, &mut |_, _| {}).unwrap(), params)
     })
 }
@@ -219,7 +219,7 @@ fn earth_dem() -> &'static (Planet, Params) {
         let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_etopo5_1024x512.tif")).unwrap();
         let map = Map::decode(&bytes, MapKind::Elevation, None, None, &MapLimits::default()).unwrap();
         let params = Params::default();
-        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()) };
+        let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(map.into()), precipitation: None };
         (build_planet(&spec, &mut |_, _| {}).unwrap(), params)
     })
 }

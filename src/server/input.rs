@@ -4,7 +4,7 @@
 
 use super::error::ApiError;
 use super::limit::HeavyLimit;
-use super::store::{MapMeta, StoredInput};
+use super::store::{MapMeta, PrecipitationMeta, StoredInput};
 use crate::maps::{GeoBounds, Map, MapError, MapKind, MapLimits};
 use crate::params::PlanetRequest;
 use axum::body::{Body, Bytes};
@@ -19,13 +19,16 @@ pub const ID_HEX: usize = 16;
 pub struct NewPlanet {
     pub input: StoredInput,
     pub map: Option<Bytes>,
+    /// The precipitation map's bytes.
+    pub precipitation: Option<Bytes>,
     /// Faces its base mesh will about have, at most ([`crate::planet::estimated_faces`]).
     pub estimated_faces: usize,
 }
 
 /// Id of a planet: the first 16 hex characters of SHA-256 over a canonical encoding of the
-/// parameters, the seed and the map with how it is read.
-pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
+/// parameters, the seed and the maps with how they are read (a planet without a precipitation
+/// map keeps the id it had before there were any).
+pub fn planet_id(input: &StoredInput, map: Option<&[u8]>, precipitation: Option<&[u8]>) -> String {
     let mut h = Sha256::new();
     h.update(b"riverworld planet v1\0params\0");
     h.update(serde_json::to_vec(&input.params).expect("params serialise"));
@@ -35,18 +38,27 @@ pub fn planet_id(input: &StoredInput, map: Option<&[u8]>) -> String {
         (Some(meta), Some(bytes)) => {
             h.update(b"\0map\0");
             h.update(meta.kind.as_str());
-            h.update(b"\0range\0");
-            h.update(serde_json::to_vec(&meta.range_m).expect("range serialises"));
-            h.update(b"\0bounds\0");
-            h.update(serde_json::to_vec(&meta.bounds).expect("bounds serialise"));
-            h.update(b"\0bytes\0");
-            h.update((bytes.len() as u64).to_le_bytes());
-            h.update(bytes);
+            hash_file(&mut h, &meta.range_m, &meta.bounds, bytes);
         }
         _ => h.update(b"\0no map"),
     }
+    if let (Some(meta), Some(bytes)) = (&input.precipitation, precipitation) {
+        h.update(b"\0precipitation");
+        hash_file(&mut h, &meta.range_mm, &meta.bounds, bytes);
+    }
     let digest = h.finalize();
     digest.iter().take(ID_HEX / 2).map(|b| format!("{b:02x}")).collect()
+}
+
+/// Feeds an uploaded file to the id's hash: how it is read, its length and its bytes.
+fn hash_file(h: &mut Sha256, range: &Option<(f64, f64)>, bounds: &Option<GeoBounds>, bytes: &[u8]) {
+    h.update(b"\0range\0");
+    h.update(serde_json::to_vec(range).expect("range serialises"));
+    h.update(b"\0bounds\0");
+    h.update(serde_json::to_vec(bounds).expect("bounds serialise"));
+    h.update(b"\0bytes\0");
+    h.update((bytes.len() as u64).to_le_bytes());
+    h.update(bytes);
 }
 
 /// Reads and validates a POST body of either content type; a map is decoded under `heavy`,
@@ -61,8 +73,8 @@ pub async fn read(req: Request<Body>, limits: MapLimits, heavy: &HeavyLimit) -> 
                 .map_err(|_| ApiError::unprocessable("invalid_params", "body", "the body is not UTF-8"))?;
             let request = PlanetRequest::from_json(text).map_err(|e| ApiError::from_params(&e))?;
             let estimated_faces = crate::planet::estimated_faces(&request.params, None);
-            let input = StoredInput { seed: request.seed, params: request.params, map: None };
-            Ok(NewPlanet { input, map: None, estimated_faces })
+            let input = StoredInput { seed: request.seed, params: request.params, map: None, precipitation: None };
+            Ok(NewPlanet { input, map: None, precipitation: None, estimated_faces })
         }
         "multipart/form-data" => {
             let mp = Multipart::from_request(req, &()).await.map_err(|r| body_error(r.status(), r.body_text()))?;
@@ -96,10 +108,21 @@ fn text_part(name: &str, bytes: &[u8]) -> Result<String, ApiError> {
 }
 
 /// The parts a multipart POST may have, each at most once.
-const PARTS: [&str; 6] = ["map", "map_kind", "map_range", "map_bounds", "seed", "params"];
+const PARTS: [&str; 9] = [
+    "map",
+    "map_kind",
+    "map_range",
+    "map_bounds",
+    "precipitation",
+    "precipitation_range",
+    "precipitation_bounds",
+    "seed",
+    "params",
+];
 
 async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit) -> Result<NewPlanet, ApiError> {
     let (mut map, mut kind, mut range, mut bounds, mut seed, mut params) = (None, None, None, None, None, None);
+    let (mut rain, mut rain_range, mut rain_bounds) = (None, None, None);
     let mut seen = std::collections::HashSet::new();
     loop {
         let field = match mp.next_field().await {
@@ -129,6 +152,15 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit
                 let text = text_part(&name, &bytes)?;
                 bounds = Some(GeoBounds::parse(&text).map_err(|e| ApiError::from_map(&e))?);
             }
+            "precipitation" => rain = Some(bytes),
+            "precipitation_range" => {
+                let text = text_part(&name, &bytes)?;
+                rain_range = Some(crate::input::parse_range(&text).map_err(|e| precipitation_error(&e))?);
+            }
+            "precipitation_bounds" => {
+                let text = text_part(&name, &bytes)?;
+                rain_bounds = Some(GeoBounds::parse(&text).map_err(|e| precipitation_error(&e))?);
+            }
             "seed" => {
                 let text = text_part(&name, &bytes)?;
                 let s = text.trim().parse::<u64>().map_err(|_| {
@@ -146,7 +178,10 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit
                 return Err(ApiError::unprocessable(
                     "unknown_field",
                     name.clone(),
-                    format!("unknown part {name:?}: expected map, map_kind, map_range, map_bounds, seed or params"),
+                    format!(
+                        "unknown part {name:?}: expected map, map_kind, map_range, map_bounds, precipitation, \
+                         precipitation_range, precipitation_bounds, seed or params"
+                    ),
                 ))
             }
         }
@@ -162,8 +197,43 @@ async fn read_multipart(mut mp: Multipart, limits: MapLimits, heavy: &HeavyLimit
     check_land_and_sea(&decoded)?;
     let estimated_faces = crate::planet::estimated_faces(&request.params, Some(&decoded));
     let meta = MapMeta { kind, bytes: map.len(), width: decoded.width, height: decoded.height, range_m: range, bounds };
-    let input = StoredInput { seed: request.seed, params: request.params, map: Some(meta) };
-    Ok(NewPlanet { input, map: Some(map), estimated_faces })
+    let precipitation = match rain {
+        Some(bytes) => {
+            let admitted = heavy.admit(decode_cost(&bytes, limits.max_pixels)).await?;
+            let decoded = decode_precipitation(bytes.clone(), rain_range, rain_bounds, limits)
+                .await
+                .map_err(|e| precipitation_error(&e))?;
+            drop(admitted);
+            let meta = PrecipitationMeta {
+                bytes: bytes.len(),
+                width: decoded.width,
+                height: decoded.height,
+                range_mm: rain_range,
+                bounds: rain_bounds,
+            };
+            Some((meta, bytes))
+        }
+        None if rain_range.is_some() || rain_bounds.is_some() => {
+            return Err(ApiError::unprocessable(
+                "missing_precipitation",
+                "precipitation",
+                "precipitation_range or precipitation_bounds came without a precipitation part",
+            ))
+        }
+        None => None,
+    };
+    let (rain_meta, rain_bytes) = precipitation.unzip();
+    let input = StoredInput { seed: request.seed, params: request.params, map: Some(meta), precipitation: rain_meta };
+    Ok(NewPlanet { input, map: Some(map), precipitation: rain_bytes, estimated_faces })
+}
+
+/// A precipitation map's problem, named by its own fields: `precipitation`,
+/// `precipitation_range` or `precipitation_bounds`.
+pub fn precipitation_error(e: &MapError) -> ApiError {
+    let mut err = ApiError::from_map(e);
+    err.field = Some(e.field().replacen("map", "precipitation", 1));
+    err.message = format!("precipitation: {}", err.message);
+    err
 }
 
 /// Refuses at upload a map that leaves the planet no land, or (covering the whole globe) no sea,
@@ -199,6 +269,18 @@ pub fn png_size(bytes: &[u8]) -> Option<(u32, u32)> {
     }
     let be = |i: usize| u32::from_be_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]);
     Some((be(16), be(20)))
+}
+
+/// Decodes a precipitation map off the async runtime.
+pub async fn decode_precipitation(
+    bytes: Bytes,
+    range: Option<(f64, f64)>,
+    bounds: Option<GeoBounds>,
+    limits: MapLimits,
+) -> Result<Map, MapError> {
+    tokio::task::spawn_blocking(move || crate::maps::decode_precipitation(&bytes, range, bounds, &limits))
+        .await
+        .unwrap_or_else(|_| Err(MapError::Corrupt { format: "image", detail: "the decoder failed".into() }))
 }
 
 /// Decodes a map off the async runtime.

@@ -300,7 +300,8 @@ fn earth_entry() -> Entry {
         range_m: Some(EARTH_RANGE_M),
         bounds: None,
     };
-    let input = StoredInput { seed: EARTH_SEED, params: crate::params::Params::default(), map: Some(map) };
+    let input =
+        StoredInput { seed: EARTH_SEED, params: crate::params::Params::default(), map: Some(map), precipitation: None };
     Entry::new(EARTH_ID.to_string(), input, Some(EARTH_MAP))
 }
 

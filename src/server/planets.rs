@@ -33,14 +33,14 @@ pub async fn create(State(state): State<Arc<AppState>>, req: Request<Body>) -> R
     let limits = MapLimits { max_bytes: state.config.body_limit, max_pixels: state.config.max_map_pixels };
     let client = client_address(&req, state.config.trust_forwarded_for);
     let new = input::read(req, limits, &state.renders).await?;
-    let id = planet_id(&new.input, new.map.as_deref());
+    let id = planet_id(&new.input, new.map.as_deref(), new.precipitation.as_deref());
     if let Some(entry) = state.lookup(&id).await? {
         return Ok(existing(&state, &entry));
     }
     admit_size(&new, state.config.max_planet_faces.min(state.config.max_faces_cap))?;
     let ticket = state.clients.take(client).ok_or_else(|| client_queue_full(state.clients.held(client)))?;
     let slot = state.pool.reserve().ok_or_else(queue_full)?;
-    state.store.put(&id, &new.input, new.map).await.map_err(|e| {
+    state.store.put(&id, &new.input, new.map, new.precipitation).await.map_err(|e| {
         tracing::error!(%id, error = %e, "cannot store planet inputs");
         ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("cannot store the inputs: {e}"))
     })?;

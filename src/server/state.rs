@@ -69,6 +69,8 @@ pub struct Record<'a> {
     pub seed: u64,
     pub params: &'a crate::params::Params,
     pub map: &'a Option<super::store::MapMeta>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub precipitation: &'a Option<super::store::PrecipitationMeta>,
     pub stats: Option<Stats>,
     pub error: Option<ApiError>,
 }
@@ -214,6 +216,7 @@ impl AppState {
             seed: entry.input.seed,
             params: &entry.input.params,
             map: &entry.input.map,
+            precipitation: &entry.input.precipitation,
             stats: st.stats.clone(),
             error: st.error.clone(),
         }
@@ -344,6 +347,29 @@ fn run_build(state: &Arc<AppState>, entry: &Arc<Entry>) {
 /// memory budget before it starts.
 pub const BUILD_BYTES_PER_FACE: u64 = 700;
 
+/// The answer to a stored input that cannot be read back.
+fn storage_read(what: &'static str) -> impl Fn(object_store::Error) -> ApiError {
+    move |e| ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("reading {what}: {e}"))
+}
+
+/// Decodes a stored map of `size` pixels with `decode`, under limits that never lock out a map
+/// accepted once, its decoding memory drawn from the budget renders share.
+fn decode_stored(
+    state: &AppState,
+    bytes: &[u8],
+    size: (u32, u32),
+    decode: impl FnOnce(&MapLimits) -> Result<Map, ApiError>,
+) -> Result<Arc<Map>, ApiError> {
+    let pixels = u64::from(size.0) * u64::from(size.1);
+    let limits = MapLimits {
+        max_bytes: state.config.body_limit.max(bytes.len()),
+        max_pixels: state.config.max_map_pixels.max(pixels),
+    };
+    let decoding = super::input::decode_cost(bytes, pixels);
+    let _admitted = state.runtime.block_on(state.renders.admit_unqueued(decoding));
+    decode(&limits).map(Arc::new)
+}
+
 fn build_entry(state: &AppState, entry: &Entry) -> Result<Planet, ApiError> {
     let input = &entry.input;
     let map = match &input.map {
@@ -351,27 +377,29 @@ fn build_entry(state: &AppState, entry: &Entry) -> Result<Planet, ApiError> {
         Some(meta) => {
             let bytes = match entry.embedded {
                 Some(b) => Bytes::from_static(b),
-                None => state.runtime.block_on(state.store.map(&entry.id)).map_err(|e| {
-                    ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "storage_error", format!("reading the map: {e}"))
-                })?,
+                None => state.runtime.block_on(state.store.map(&entry.id)).map_err(storage_read("the map"))?,
             };
-            // A stored map was accepted once: the current limits never lock it out.
-            let pixels = u64::from(meta.width) * u64::from(meta.height);
-            let limits = MapLimits {
-                max_bytes: state.config.body_limit.max(bytes.len()),
-                max_pixels: state.config.max_map_pixels.max(pixels),
-            };
-            // Decoding and building draw their memory from the budget renders share.
-            let decoding = super::input::decode_cost(&bytes, pixels);
-            let _admitted = state.runtime.block_on(state.renders.admit_unqueued(decoding));
-            let map = Map::decode(&bytes, meta.kind, meta.range_m, meta.bounds, &limits)
-                .map_err(|e| ApiError::from_map(&e))?;
-            Some(Arc::new(map))
+            Some(decode_stored(state, &bytes, (meta.width, meta.height), |limits| {
+                Map::decode(&bytes, meta.kind, meta.range_m, meta.bounds, limits).map_err(|e| ApiError::from_map(&e))
+            })?)
+        }
+    };
+    let precipitation = match &input.precipitation {
+        None => None,
+        Some(meta) => {
+            let bytes = state
+                .runtime
+                .block_on(state.store.precipitation(&entry.id))
+                .map_err(storage_read("the precipitation map"))?;
+            Some(decode_stored(state, &bytes, (meta.width, meta.height), |limits| {
+                crate::maps::decode_precipitation(&bytes, meta.range_mm, meta.bounds, limits)
+                    .map_err(|e| super::input::precipitation_error(&e))
+            })?)
         }
     };
     let cost = crate::planet::estimated_faces(&input.params, map.as_deref()) as u64 * BUILD_BYTES_PER_FACE;
     let _admitted = state.runtime.block_on(state.renders.admit_unqueued(cost));
-    let spec = PlanetSpec { seed: input.seed, params: input.params.clone(), map };
+    let spec = PlanetSpec { seed: input.seed, params: input.params.clone(), map, precipitation };
     let mut progress = |_: &str, f: f32| {
         entry.state.lock().expect("entry lock").progress = f;
     };

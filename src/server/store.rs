@@ -1,5 +1,6 @@
 //! Where planets' inputs live: an object store (a local directory by default, S3 with the `s3`
-//! feature) holding `planets/{id}/map.bin` and `planets/{id}/request.json`.
+//! feature) holding `planets/{id}/map.bin`, `planets/{id}/precipitation.bin` and
+//! `planets/{id}/request.json`.
 //!
 //! Only inputs are stored; meshes and rendered files are caches, rebuilt on demand because the
 //! same inputs always give the same planet. Each object is written atomically; the map goes first
@@ -28,13 +29,30 @@ pub struct MapMeta {
     pub bounds: Option<GeoBounds>,
 }
 
-/// `request.json`: everything that defines a planet besides the map's bytes.
+/// A stored precipitation map's description (its bytes are in `precipitation.bin`); also the
+/// record's `precipitation` field.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PrecipitationMeta {
+    /// Size of the uploaded file.
+    pub bytes: usize,
+    pub width: u32,
+    pub height: u32,
+    /// Millimetres per year of the darkest and brightest pixel (PNG).
+    pub range_mm: Option<(f64, f64)>,
+    /// Bounds given with the upload; null = the globe (or a GeoTIFF's own georeference).
+    pub bounds: Option<GeoBounds>,
+}
+
+/// `request.json`: everything that defines a planet besides the maps' bytes.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct StoredInput {
     pub seed: u64,
     pub params: Params,
     pub map: Option<MapMeta>,
+    /// A precipitation map in place of the climate model's (absent in older records).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub precipitation: Option<PrecipitationMeta>,
 }
 
 /// The planet store.
@@ -72,10 +90,19 @@ impl Store {
         Ok(Store { inner: Arc::new(fs) })
     }
 
-    /// Writes a planet's inputs: the map (if any) first, `request.json` last.
-    pub async fn put(&self, id: &str, input: &StoredInput, map: Option<Bytes>) -> Result<(), object_store::Error> {
+    /// Writes a planet's inputs: the maps (if any) first, `request.json` last.
+    pub async fn put(
+        &self,
+        id: &str,
+        input: &StoredInput,
+        map: Option<Bytes>,
+        precipitation: Option<Bytes>,
+    ) -> Result<(), object_store::Error> {
         if let Some(bytes) = map {
             self.inner.put(&planet_path(id, "map.bin"), PutPayload::from_bytes(bytes)).await?;
+        }
+        if let Some(bytes) = precipitation {
+            self.inner.put(&planet_path(id, "precipitation.bin"), PutPayload::from_bytes(bytes)).await?;
         }
         let json = serde_json::to_vec_pretty(input).expect("input serialises");
         self.inner.put(&planet_path(id, "request.json"), PutPayload::from(json)).await?;
@@ -112,9 +139,14 @@ impl Store {
         self.inner.get(&planet_path(id, "map.bin")).await?.bytes().await
     }
 
+    /// A planet's precipitation map bytes.
+    pub async fn precipitation(&self, id: &str) -> Result<Bytes, object_store::Error> {
+        self.inner.get(&planet_path(id, "precipitation.bin")).await?.bytes().await
+    }
+
     /// Removes a planet: `request.json` first, so a half-finished delete leaves no planet.
     pub async fn delete(&self, id: &str) -> Result<(), object_store::Error> {
-        for name in ["request.json", "map.bin"] {
+        for name in ["request.json", "map.bin", "precipitation.bin"] {
             match self.inner.delete(&planet_path(id, name)).await {
                 Ok(()) | Err(object_store::Error::NotFound { .. }) => {}
                 Err(e) => return Err(e),

@@ -17,7 +17,7 @@ const CANARY_FACES: usize = 40_000;
 /// are equal bit for bit, `Ok(false)` when they differ, an error when the device failed.
 pub fn reproduces_cpu(gpu: &Arc<GpuAdaption>) -> Result<bool, GpuError> {
     let params = Params { base_faces: 2000, ..Params::default() };
-    let spec = PlanetSpec { seed: 3, params: params.clone(), map: None };
+    let spec = PlanetSpec { seed: 3, params: params.clone(), map: None, precipitation: None };
     let planet = build_planet(&spec, &mut |_, _| {}).map_err(|e| GpuError::Device(format!("canary planet: {e}")))?;
     // Over a river's mouth, looking inland: sea, coast, river and continent splits.
     let mouth = planet.rivers.mouths.first().copied().unwrap_or(0);

@@ -16,7 +16,12 @@ const R: f64 = 6_371_000.0;
 fn planet() -> &'static Planet {
     static P: OnceLock<Planet> = OnceLock::new();
     P.get_or_init(|| {
-        let spec = PlanetSpec { seed: 7, params: Params { base_faces: 4000, ..Params::paper() }, map: None };
+        let spec = PlanetSpec {
+            seed: 7,
+            params: Params { base_faces: 4000, ..Params::paper() },
+            map: None,
+            precipitation: None,
+        };
         build_planet(&spec, &mut |_, _| {}).unwrap()
     })
 }
@@ -388,7 +393,9 @@ fn a_planet_with_other_parameters_adapts_alike() {
         ..Params::paper()
     };
     params.validate().unwrap();
-    let planet = build_planet(&PlanetSpec { seed: 11, params: params.clone(), map: None }, &mut |_, _| {}).unwrap();
+    let planet =
+        build_planet(&PlanetSpec { seed: 11, params: params.clone(), map: None, precipitation: None }, &mut |_, _| {})
+            .unwrap();
     let r = params.radius_m;
     let top = crate::adapt::terrain_top(&params, &planet.mesh);
     let mut cpu = Adapter::new(planet.mesh.clone(), params.clone());
@@ -414,7 +421,7 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
     let limits = crate::maps::MapLimits::default();
     let map = crate::maps::Map::decode(&bytes, crate::maps::MapKind::Elevation, None, None, &limits).unwrap();
     let params = Params::default();
-    let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(Arc::new(map)) };
+    let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(Arc::new(map)), precipitation: None };
     let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
     let guide = planet.mesh.guide.clone().expect("an elevation map guides the splits");
     let r = params.radius_m;

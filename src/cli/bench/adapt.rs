@@ -127,7 +127,7 @@ mod tests {
         let bytes =
             std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/maps/earth_landmask_ne10m_1024x512.png")).unwrap();
         let map = Map::decode(&bytes, MapKind::Continents, None, None, &MapLimits::default()).unwrap();
-        let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(map.into()) };
+        let spec = PlanetSpec { seed: 42, params: Params::default(), map: Some(map.into()), precipitation: None };
         let scene = Scene::new(&spec);
         for (name, cam) in &scene.views {
             let s = Adapter::new(scene.planet.mesh.clone(), spec.params.clone()).adapt(cam, None);

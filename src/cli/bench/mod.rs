@@ -19,7 +19,12 @@ struct Case {
 fn cases(maps: &Path, quick: bool) -> Vec<Case> {
     let random = |faces: u32| Case {
         name: format!("random, {faces} base faces"),
-        spec: PlanetSpec { seed: 42, params: Params { base_faces: faces, ..Params::default() }, map: None },
+        spec: PlanetSpec {
+            seed: 42,
+            params: Params { base_faces: faces, ..Params::default() },
+            map: None,
+            precipitation: None,
+        },
     };
     let mut out = vec![random(5_000), random(100_000)];
     if !quick {
@@ -34,7 +39,7 @@ fn cases(maps: &Path, quick: bool) -> Vec<Case> {
         match load_map(&src, &MapLimits::default()) {
             Ok(map) => out.push(Case {
                 name: format!("Earth bitmap {file}"),
-                spec: PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) },
+                spec: PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)), precipitation: None },
             }),
             Err(e) => eprintln!("skipping {file}: {e}"),
         }
@@ -71,7 +76,7 @@ pub fn run(maps: &Path, runs: usize, quick: bool, only: &[Table]) {
     }
     let src = MapSource { path: maps.join("earth_landmask_ne10m_1024x512.png"), ..MapSource::default() };
     let spec = match load_map(&src, &MapLimits::default()) {
-        Ok(map) => PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)) },
+        Ok(map) => PlanetSpec { seed: 42, params: Params::default(), map: Some(Arc::new(map)), precipitation: None },
         Err(e) => return eprintln!("skipping the adaption and snapshot tables: {e}"),
     };
     if wants(Table::Adapt) {
