@@ -136,17 +136,26 @@ fn precipitation_is_within_a_factor_of_two_at_most_stations() {
     let c = earth_climate(&map);
     let ratios: Vec<(&str, f64)> = STATIONS.iter().map(|s| (s.0, c.precip_at(s.1, s.2) / s.3)).collect();
     let within = ratios.iter().filter(|r| (0.5..=2.0).contains(&r.1)).count();
-    // Measured 22 of 37 (docs/realism.md); deserts come out too wet and monsoon Asia too dry.
-    assert!(within >= 20, "{ratios:?}");
+    // Measured 23 of 37 (docs/realism.md; 22 before the monsoon's reach and the wet land's
+    // gain); deserts come out too wet, the humid subtropics too dry.
+    assert!(within >= 21, "{ratios:?}");
     // Wet tropics far above deserts.
     assert!(c.precip_at(0.05, 18.26) > 3.0 * c.precip_at(16.8, -3.0));
     // Over all 97 stations, the mean factor off (hyper-arid places counted at 25 mm): measured
-    // e^0.743 = 2.1 (before the cold coasts, the subtropics' drier floor and the smoothing: e^0.823).
+    // e^0.663 = 1.94 (e^0.743 before the monsoon's reach and the wet land's gain; e^0.823
+    // before the cold coasts, the subtropics' drier floor and the smoothing).
     let all: Vec<_> = STATIONS.iter().chain(MORE_STATIONS.iter()).collect();
     let logs: Vec<(f64, &str)> =
         all.iter().map(|s| ((c.precip_at(s.1, s.2).max(25.0) / s.3.max(25.0)).ln(), s.0)).collect();
     let mean = logs.iter().map(|l| l.0.abs()).sum::<f64>() / logs.len() as f64;
-    assert!(mean <= 0.78, "mean |ln(model / real)| {mean:.3}: {logs:?}");
+    eprintln!(
+        "STATIONS mean {mean:.3} close {} of 97, 37: {within}",
+        logs.iter().filter(|l| l.0.abs() <= 2f64.ln()).count()
+    );
+    assert!(mean <= 0.70, "mean |ln(model / real)| {mean:.3}: {logs:?}");
+    // Within a factor of two at 57 of the 97 (52 before).
+    let close = logs.iter().filter(|l| l.0.abs() <= 2f64.ln()).count();
+    assert!(close >= 54, "{close} of 97 within a factor of 2: {logs:?}");
 }
 
 /// Places of known Köppen class: humid (A, C or D) ones the ground's colour must show green,
@@ -223,11 +232,11 @@ fn the_grounds_colour_follows_the_climate() {
     };
     let not_green: Vec<&str> = HUMID.iter().filter(|n| greenness(n) < 35).copied().collect();
     let not_desert: Vec<&str> = ARID.iter().filter(|n| greenness(n) > -10).copied().collect();
-    // Measured: 17 of 26 green, 13 of 25 desert (the rest are the climate's errors: Karachi,
-    // Muscat, Zahedan, Yuma get 4-9x their rain, Chongqing and Asuncion a fifth to a third).
-    // By latitude alone: 3 of 26 and 17 of 25.
+    // Measured: 18 of 26 green, 18 of 25 desert (the rest are the climate's errors: Yuma,
+    // Barstow, Khartoum get 4-6x their rain, Chongqing and Asuncion a third; before the
+    // monsoon's reach and the wet land's gain 17 and 13). By latitude alone: 3 of 26 and 17 of 25.
     assert!(not_green.len() <= 9, "humid places not green: {not_green:?}");
-    assert!(not_desert.len() <= 13, "arid places not desert: {not_desert:?}");
+    assert!(not_desert.len() <= 9, "arid places not desert: {not_desert:?}");
     // The Sahara and the Ganges plain lie at the same latitude.
     assert!(greenness(&"Patna") > 35 && greenness(&"In Salah") < -20);
 }
