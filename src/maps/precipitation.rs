@@ -20,8 +20,7 @@ pub fn decode_precipitation(
     bounds: Option<GeoBounds>,
     limits: &MapLimits,
 ) -> Result<Map, MapError> {
-    let is_tiff = bytes.starts_with(b"II*\0") || bytes.starts_with(b"MM\0*");
-    if !is_tiff && range_mm.is_none() && bytes.starts_with(b"\x89PNG") {
+    if range_mm.is_none() && super::sniff(bytes).is_ok_and(|f| f == super::Format::Png) {
         return Err(MapError::InvalidMapRange(
             "a precipitation PNG needs a range MIN_MM,MAX_MM (the mm per year that the lowest and highest pixel \
              values stand for)"

@@ -28,8 +28,8 @@
 //!    under the subtropics' sinking air), times the warmth of that sea outside the inner
 //!    tropics: coasts beside cold currents (Atacama, Namib) stay dry.
 //! 5. `P = P0(lat) * m` plus the orographic rain, or what the poleward flow brings if more,
-//!    times up to [`LAND_GAIN`] where it is wet; then smoothed over land ([`SMOOTH_KM`]) so that rows and columns of
-//!    the grid do not show.
+//!    times up to [`LAND_GAIN`] where it is wet; then smoothed over land ([`SMOOTH_KM`]) so
+//!    that rows and columns of the grid do not show.
 //! 6. **Temperature** `T = 28 °C - 30 °C * sin²(lat) - 6.5 °C/km * altitude`; potential
 //!    (open-water) evaporation `E0 = 50 mm * T * (1 + 0.8 exp(-P / 400 mm))` per year for
 //!    `T > 0`: dry air takes up more.
@@ -292,30 +292,15 @@ impl Climate {
         Climate::new(&cells)
     }
 
-    /// The same climate with the precipitation of a user's map (mm/yr, [`crate::maps::decode_precipitation`])
-    /// wherever it covers a grid cell: the mean of up to 16 x 16 samples over the cell, one per
-    /// map pixel or more; cells outside the map's bounds or under its nodata keep the model's.
-    pub fn with_precipitation(mut self, map: Option<&crate::maps::Map>) -> Climate {
-        let Some(map) = map else { return self };
-        let step = 1.0 / CELLS_PER_DEG as f64;
-        let (dx, dy) = map.pixel_size_deg();
-        let n = ((step / dx.min(dy)).ceil() as usize).clamp(2, 16);
-        for (i, p) in self.precip_mm.iter_mut().enumerate() {
-            let (north, west) = (90.0 - (i / self.width) as f64 * step, -180.0 + (i % self.width) as f64 * step);
-            let (mut sum, mut count) = (0.0f64, 0u32);
-            for a in 0..n {
-                for b in 0..n {
-                    let lat = north - (a as f64 + 0.5) * step / n as f64;
-                    let lon = west + (b as f64 + 0.5) * step / n as f64;
-                    if let Some(v) = map.sample(lat, lon) {
-                        sum += f64::from(v);
-                        count += 1;
-                    }
+    /// The same climate with the precipitation of a user's map, as [`precipitation_grid`] puts
+    /// it on the grid: NaN cells (outside the map or under its nodata) keep the model's.
+    pub fn with_precipitation(mut self, grid: Option<&[f32]>) -> Climate {
+        if let Some(grid) = grid {
+            assert_eq!(grid.len(), self.precip_mm.len(), "one value per grid cell");
+            for (p, &g) in self.precip_mm.iter_mut().zip(grid) {
+                if !g.is_nan() {
+                    *p = g;
                 }
-            }
-            // Cells the map covers for the most part take its mean.
-            if 2 * count as usize >= n * n {
-                *p = (sum / f64::from(count)) as f32;
             }
         }
         self
@@ -386,6 +371,36 @@ fn advect(
             out[i] = (m, carried - m);
         }
     }
+}
+
+/// A user's precipitation map (mm/yr, [`crate::maps::decode_precipitation`]) on the climate's
+/// grid: each cell the mean of up to 16 x 16 samples over it, one per map pixel or more, where
+/// the map covers most of the cell; NaN elsewhere (outside its bounds, under its nodata).
+pub fn precipitation_grid(map: &crate::maps::Map) -> Vec<f32> {
+    let step = 1.0 / CELLS_PER_DEG as f64;
+    let (dx, dy) = map.pixel_size_deg();
+    let n = ((step / dx.min(dy)).ceil() as usize).clamp(2, 16);
+    (0..WIDTH * HEIGHT)
+        .map(|i| {
+            let (north, west) = (90.0 - (i / WIDTH) as f64 * step, -180.0 + (i % WIDTH) as f64 * step);
+            let (mut sum, mut count) = (0.0f64, 0u32);
+            for a in 0..n {
+                for b in 0..n {
+                    let lat = north - (a as f64 + 0.5) * step / n as f64;
+                    let lon = west + (b as f64 + 0.5) * step / n as f64;
+                    if let Some(v) = map.sample(lat, lon) {
+                        sum += f64::from(v);
+                        count += 1;
+                    }
+                }
+            }
+            if 2 * count as usize >= n * n {
+                (sum / f64::from(count)) as f32
+            } else {
+                f32::NAN
+            }
+        })
+        .collect()
 }
 
 /// Distance (km) from every cell eastward along its row to open ocean: sea at least
@@ -598,7 +613,7 @@ mod tests {
         let bounds = GeoBounds { west: -170.0, south: 0.0, east: -150.0, north: 20.0 };
         let values: Vec<f32> = (0..40 * 40).map(|i| if i % 40 < 20 { 3000.0 } else { f32::NAN }).collect();
         let map = Map::from_values(MapKind::Elevation, 40, 40, bounds, values).unwrap();
-        let c = model.clone().with_precipitation(Some(&map));
+        let c = model.clone().with_precipitation(Some(&precipitation_grid(&map)));
         assert_eq!(c.precip_at(10.5, -165.5), 3000.0);
         assert_eq!(c.precip_at(0.5, -160.5), 3000.0);
         // Nodata, and cells outside the bounds, keep the model's rain.

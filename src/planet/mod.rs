@@ -211,13 +211,15 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
         let k = f64::from(m.width / filtered.width);
         filtered.with_shore((shore_px / k).ceil() as u32).unwrap_or(filtered)
     });
-    let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), spec.precipitation.as_deref(), spec.seed);
+    // A precipitation map on the climate's grid, once for both water balances.
+    let rain = spec.precipitation.as_deref().map(climate::precipitation_grid);
+    let mut report = rivers::build_rivers(&mut mesh, p, relief.as_ref(), rain.as_deref(), spec.seed);
     progress("finishing", 0.9);
     rivers::finish(&mut mesh);
     // Splits below the base mesh follow an elevation map where it resolves them.
     mesh.guide = map_in.and_then(|m| Guide::from_map(m, p.radius_m)).map(std::sync::Arc::new);
     let graph = RiverGraph::from_mesh(&mesh);
-    let (water, precipitation) = water_budget(&mesh, p.sea_level_m, spec.precipitation.as_deref());
+    let (water, precipitation) = water_budget(&mesh, p.sea_level_m, rain.as_deref());
     mesh.precipitation = precipitation.map(std::sync::Arc::new);
     // Channel widths for the water surface, from the discharge of the climate's runoff.
     mesh.channels = network::channels(&mesh, &graph, &graph.discharge(&mesh, &water)).map(std::sync::Arc::new);
@@ -250,7 +252,7 @@ pub fn build_planet(spec: &PlanetSpec, progress: &mut dyn FnMut(&str, f32)) -> R
 fn water_budget(
     mesh: &Mesh,
     sea: f64,
-    rain: Option<&Map>,
+    rain: Option<&[f32]>,
 ) -> (network::WaterBudget, Option<crate::mesh::precipitation::Precipitation>) {
     let land = |v: usize| mesh.vertices[v].flags.is_inland() || mesh.vertices[v].flags.contains(VertexFlags::COAST);
     let altitude = |v: usize| mesh.vertices[v].ground - sea;

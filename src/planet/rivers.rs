@@ -76,13 +76,14 @@ fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at
 /// Water each vertex yields as runoff from land (m³/yr), loses as open water, evaporation
 /// less precipitation (m³/yr), and a river's floodplain loses there (mm/yr,
 /// [`super::climate::channel_loss_mm`]), in the planet's climate ([`super::climate`]); `height`
-/// is its altitude (m relative to sea level); `rain` a precipitation map in place of the model's.
+/// is its altitude (m relative to sea level); `rain` a precipitation map on the climate's grid
+/// ([`super::climate::precipitation_grid`]) in place of the model's.
 fn water_balance(
     mesh: &Mesh,
     (inland, coast): (&[bool], &[bool]),
     height: &[f64],
     area: &[f64],
-    rain: Option<&Map>,
+    rain: Option<&[f32]>,
 ) -> [Vec<f64>; 3] {
     use super::climate::{channel_loss_mm, runoff_mm, Climate};
     let is_land = |v: usize| inland[v] || coast[v];
@@ -146,12 +147,12 @@ fn relief_at(relief: Option<&Map>, mesh: &Mesh, v: u32) -> Option<f64> {
 }
 
 /// Builds the river networks and assigns every altitude of the base mesh; `rain`, a
-/// precipitation map, replaces the climate model's where it covers the planet.
+/// precipitation map on the climate's grid, replaces the model's where it covers the planet.
 pub fn build_rivers(
     mesh: &mut Mesh,
     params: &Params,
     relief: Option<&Map>,
-    rain: Option<&Map>,
+    rain: Option<&[f32]>,
     seed: u64,
 ) -> RiverReport {
     let adj = mesh.adjacency();

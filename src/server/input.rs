@@ -278,9 +278,7 @@ pub async fn decode_precipitation(
     bounds: Option<GeoBounds>,
     limits: MapLimits,
 ) -> Result<Map, MapError> {
-    tokio::task::spawn_blocking(move || crate::maps::decode_precipitation(&bytes, range, bounds, &limits))
-        .await
-        .unwrap_or_else(|_| Err(MapError::Corrupt { format: "image", detail: "the decoder failed".into() }))
+    off_runtime(move || crate::maps::decode_precipitation(&bytes, range, bounds, &limits)).await
 }
 
 /// Decodes a map off the async runtime.
@@ -291,7 +289,12 @@ pub async fn decode_map(
     bounds: Option<GeoBounds>,
     limits: MapLimits,
 ) -> Result<Map, MapError> {
-    tokio::task::spawn_blocking(move || Map::decode(&bytes, kind, range, bounds, &limits))
+    off_runtime(move || Map::decode(&bytes, kind, range, bounds, &limits)).await
+}
+
+/// Runs a decoder on the blocking pool; a decoder that died is a corrupt image.
+async fn off_runtime(decode: impl FnOnce() -> Result<Map, MapError> + Send + 'static) -> Result<Map, MapError> {
+    tokio::task::spawn_blocking(decode)
         .await
         .unwrap_or_else(|_| Err(MapError::Corrupt { format: "image", detail: "the decoder failed".into() }))
 }
