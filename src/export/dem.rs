@@ -29,6 +29,7 @@ use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
 use crate::mesh::split::position::DESCENDANT_REACH;
 use glam::DVec3;
 use rayon::prelude::*;
+use rustc_hash::FxHashMap as HashMap;
 
 /// Most cells along either side of a DEM.
 pub const MAX_DEM_SIDE: u32 = 8192;
@@ -323,9 +324,11 @@ impl<'a> Surface<'a> {
         // About one split per cell at the finest, plus the border's.
         let span = |d: f64, c: f64| ((d / c).ceil().min(1e6) as usize) + 8;
         refiner.reserve((span(rect.east - rect.west, dx) * span(rect.north - rect.south, dy)).min(1 << 20));
-        let mut stack: Vec<[u32; 3]> = ROOTS.to_vec();
-        while let Some(node) = stack.pop() {
-            let u = node.map(|v| refiner.mesh().pos(v).normalize());
+        // Nodes with their corners' unit vectors (a child shares two corners with its parent).
+        let unit = |refiner: &Refiner, v: u32| refiner.mesh().pos(v).normalize();
+        let mut stack: Vec<([u32; 3], [DVec3; 3])> =
+            ROOTS.iter().map(|&node| (node, node.map(|v| unit(&refiner, v)))).collect();
+        while let Some((node, u)) = stack.pop() {
             // A node's descendants are not inside it (eq. 2): it is passed over only when
             // nothing within DESCENDANT_REACH of its longest edge meets the region (without
             // that, base faces 90 times the cells' size were left unsplit inside regions whose
@@ -349,7 +352,9 @@ impl<'a> Surface<'a> {
             if u[1].distance(u[2]) * r <= LEAF_EDGE_CELLS * target && !refiner.base_splits(node) {
                 continue;
             }
-            stack.extend(refiner.children(node));
+            let [a, b] = refiner.children(node);
+            let um = unit(&refiner, a[0]);
+            stack.extend([(a, [um, u[0], u[1]]), (b, [um, u[2], u[0]])]);
         }
         // The faces of the refined (conforming) mesh that may hold a cell: a split's vertex
         // leaves the split edge (eq. 2), so a node's children cover part of the neighbour across
@@ -414,15 +419,26 @@ impl<'a> Surface<'a> {
             ((g - sea) as f32, water)
         };
         // Latitude, longitude and projected latitude (the rows' coordinate) of each vertex,
-        // computed once.
-        let mut corners = vec![[f64::NAN; 3]; mesh.vertices.len()];
+        // computed once: the refiner's vertices in a table of their own (not one as long as
+        // the base mesh's, filled on every call), the few base-mesh corners in a map.
+        let first_new = self.refiner().base_vertices();
+        let mut new_corners = vec![[f64::NAN; 3]; mesh.vertices.len().saturating_sub(first_new)];
+        let mut base_corners: HashMap<u32, [f64; 3]> = HashMap::default();
         let mut corner = |v: u32| {
-            let slot = &mut corners[v as usize];
-            if slot[0].is_nan() {
+            let at = |v: u32| {
                 let (lat, lon) = lat_lon(mesh.pos(v));
-                *slot = [lat, lon, row_map.project(lat)];
+                [lat, lon, row_map.project(lat)]
+            };
+            match (v as usize).checked_sub(first_new) {
+                Some(i) => {
+                    let slot = &mut new_corners[i];
+                    if slot[0].is_nan() {
+                        *slot = at(v);
+                    }
+                    *slot
+                }
+                None => *base_corners.entry(v).or_insert_with(|| at(v)),
             }
-            *slot
         };
         const EPS: f64 = 1e-7;
         // The window's own rectangle: the surface may be refined over more (a margin).

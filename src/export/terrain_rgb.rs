@@ -65,11 +65,13 @@ impl Encoding {
 
     /// The colour of a height in metres, rounded to the encoding's step.
     pub fn encode(self, h: f64) -> [u8; 3] {
-        let n = match self {
-            Encoding::Terrarium => ((h + 32768.0) * 256.0).round(),
-            Encoding::Mapbox => ((h + 10000.0) * 10.0).round(),
+        let x = match self {
+            Encoding::Terrarium => (h + 32768.0) * 256.0,
+            Encoding::Mapbox => (h + 10000.0) * 10.0,
         };
-        let n = if n.is_nan() { 0 } else { n.clamp(0.0, f64::from((1u32 << 24) - 1)) as u32 };
+        // Rounded half up by a cast (`as` truncates a positive value, saturates a negative one
+        // to 0 and NaN to 0): `f64::round` is a library call on the baseline x86-64.
+        let n = ((x + 0.5) as u32).min((1 << 24) - 1);
         [(n >> 16) as u8, (n >> 8) as u8, n as u8]
     }
 
@@ -287,14 +289,16 @@ pub(crate) fn upsample(samples: &[f32], side: usize) -> Vec<f32> {
     let mut wide = vec![0f64; side * px];
     wide.par_chunks_mut(px).zip(samples.par_chunks(side)).for_each(|(out, row)| {
         for (o, (k, w)) in out.iter_mut().zip(&taps) {
-            *o = (0..4).map(|j| w[j] * f64::from(row[k + j])).sum::<f64>();
+            let x = &row[*k..k + 4];
+            *o = w[0] * f64::from(x[0]) + w[1] * f64::from(x[1]) + w[2] * f64::from(x[2]) + w[3] * f64::from(x[3]);
         }
     });
     let mut out = vec![0f32; px * px];
     out.par_chunks_mut(px).zip(taps.par_iter()).for_each(|(line, (k, w))| {
         let (near, far) = (&samples[(k + 1) * side..], &samples[(k + 2) * side..]);
+        let rows: [&[f64]; 4] = std::array::from_fn(|m| &wide[(k + m) * px..(k + m + 1) * px]);
         for (j, (o, (c, _))) in line.iter_mut().zip(&taps).enumerate() {
-            let v: f64 = (0..4).map(|m| w[m] * wide[(k + m) * px + j]).sum();
+            let v = w[0] * rows[0][j] + w[1] * rows[1][j] + w[2] * rows[2][j] + w[3] * rows[3][j];
             let (a, b, d, e) = (near[c + 1], near[c + 2], far[c + 1], far[c + 2]);
             let lo = a.min(b).min(d).min(e);
             let hi = a.max(b).max(d).max(e);

@@ -169,6 +169,11 @@ impl<'a> Refiner<'a> {
         self.refined.as_ref().unwrap_or(self.base)
     }
 
+    /// Vertices of the base mesh: those the refiner adds come after them.
+    pub fn base_vertices(&self) -> usize {
+        self.base.vertices.len()
+    }
+
     /// Splits made so far.
     pub fn splits(&self) -> usize {
         self.midpoints.len()
@@ -177,17 +182,16 @@ impl<'a> Refiner<'a> {
     /// The vertex that splits edge `(a, b)` of the tree, splitting it (with its bisection
     /// closure) if no split has yet.
     pub fn midpoint(&mut self, a: u32, b: u32) -> u32 {
-        // An edge still in the mesh is unsplit (found around `a`, without a hash map's cache
-        // misses); a tree edge that is not was split, by the base mesh or by this refiner.
-        let Some(e) = self.mesh().edge_between(a, b) else {
-            let key = pair(a, b);
-            // Only edges between base-mesh vertices may be the base's.
-            let n = self.base.vertices.len() as u32;
-            let base = if a < n && b < n { self.tree.midpoints.get(&key) } else { None };
-            return *base
-                .or_else(|| self.midpoints.get(&key))
-                .expect("a tree edge is in the mesh or split into a known vertex");
-        };
+        // A tree edge was split by the base mesh (only edges between its vertices may be),
+        // by this refiner (a small map, in cache) or not at all: then it is still in the mesh,
+        // found around `a` (a walk that fails around the whole fan when the edge was split).
+        let key = pair(a, b);
+        let n = self.base.vertices.len() as u32;
+        let known = if a < n && b < n { self.tree.midpoints.get(&key) } else { None };
+        if let Some(&m) = known.or_else(|| self.midpoints.get(&key)) {
+            return m;
+        }
+        let e = self.mesh().edge_between(a, b).expect("a tree edge is in the mesh or split into a known vertex");
         let params = self.params;
         // Borrowed from the base mesh (not cloned: an `Arc`'s count shared by the threads that
         // refine in parallel would bounce between their caches on every split).
