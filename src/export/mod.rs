@@ -6,6 +6,7 @@
 //! Altitudes in every export are metres relative to sea level (`ground - params.sea_level_m`),
 //! not to the base sphere the mesh stores them against.
 
+pub mod carve;
 pub mod climate;
 pub mod cog;
 pub mod colour_mip;

@@ -32,6 +32,8 @@ pub fn view_glb(
     compression: Compression,
 ) -> Result<Vec<u8>, GlbTooLarge> {
     let triangles = mesh.triangles();
+    // Wide rivers' channels carved where the view is finer than them (`export/carve.rs`).
+    let mesh = &*super::carve::carved(mesh, &triangles);
     let normals = surface_normals(mesh, &triangles);
     let levels = water_levels(mesh, &triangles);
     encode_glb(

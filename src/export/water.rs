@@ -110,6 +110,12 @@ fn shortest_edges(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     shortest
 }
 
+/// Half the channel width (m) of every vertex ([`half_width`]: `None` off rivers) and the
+/// shortest edge (m) at it among `triangles`' edges (infinite for vertices of none).
+pub fn channel_halves(mesh: &Mesh, triangles: &[[u32; 3]]) -> (Vec<Option<f64>>, Vec<f64>) {
+    (mesh.vertices.par_iter().map(|v| half_width(mesh, v)).collect(), shortest_edges(mesh, triangles))
+}
+
 /// Width (m) of a river vertex with no base-mesh river near it.
 pub const SMALL_STREAM_M: f32 = 2.0;
 
@@ -124,8 +130,7 @@ pub const SHALLOW_RIVER_M: f64 = 1.0;
 /// the order it is taken in.
 pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     let vertices = &mesh.vertices;
-    let half: Vec<Option<f64>> = vertices.par_iter().map(|v| half_width(mesh, v)).collect();
-    let shortest = shortest_edges(mesh, triangles);
+    let (half, shortest) = channel_halves(mesh, triangles);
     // A flowing river's vertex carries its channel's water, SHALLOW_RIVER_M deep where the
     // mesh gives it none; a dry bed carries none, nor a river too narrow for the faces at it.
     let shown = |v: usize| half[v].is_none_or(|h| h > 0.0 && 2.0 * h * EDGES_PER_WIDTH >= shortest[v]);

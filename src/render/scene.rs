@@ -125,6 +125,8 @@ pub fn view_projection(cam: &Camera) -> DMat4 {
 /// Prepares `mesh` (ground altitudes above the base sphere) for drawing from `cam`.
 pub fn prepare(mesh: &Mesh, params: &Params, cam: &Camera, sun: DVec3) -> Scene {
     let triangles = mesh.triangles();
+    // Wide rivers' channels carved where the view is finer than them (`export/carve.rs`).
+    let mesh = &*crate::export::carve::carved(mesh, &triangles);
     let normals = crate::export::surface_normals(mesh, &triangles);
     let levels = crate::export::water::water_levels(mesh, &triangles);
     let sea = params.sea_level_m;

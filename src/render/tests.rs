@@ -310,14 +310,9 @@ fn rivers_narrower_than_a_pixel_stay_visible_as_lines() {
 /// across the river at the image's centre, on the line perpendicular to the river's edge there,
 /// at ~4.8 m a pixel. Rivers of several widths, off lakes and coasts, on the Earth DEM planet.
 ///
-/// Not met yet (ignored; run with `--ignored`, `RIVER_SHOTS=DIR` keeps the pictures): measured
-/// 43 m for a 623 m channel and 29 m for a 390 m one (ratios 0.07). A view this close refines
-/// the ground beside a river to edges of metres, and the split rule raises every vertex beside a
-/// river to its bank (eq. 11); the water surface reaches only the faces around the river's
-/// vertices (`export/water.rs`), two edges wide. Meeting it needs the channel carved into the
-/// ground where the mesh is finer than the channel (the split rule, with its WGSL twin).
+/// `RIVER_SHOTS=DIR` keeps the pictures. A view this close refines the ground beside a river
+/// to edges of metres; its channel is carved into them (`export/carve.rs`).
 #[test]
-#[ignore]
 fn a_river_seen_from_2_km_is_as_wide_as_its_channel() {
     let (planet, params) = earth_dem();
     let mesh = &planet.mesh;

@@ -1,0 +1,226 @@
+//! River channels carved into the ground where the mesh is finer than they are wide.
+//!
+//! The paper's rivers are lines: eq. 11 raises every vertex beside a river vertex to its bank,
+//! so a view close to a river, whose edges beside it are far shorter than the channel is wide,
+//! shows the water only in the faces around the river's own vertices (`export/water.rs`), a
+//! few edges wide. Here the vertices within half the channel's width of a flowing river vertex
+//! take a bed below that vertex's water level: a parabolic cross-section, as deep as hydraulic
+//! geometry makes the channel (`planet/network.rs`, `0.36 Q^0.37`) on its centre line and
+//! nothing at its banks. The water surface then covers them flat at the river's level, and the
+//! shore lies where the banks rise above it: a 600 m river is 600 m wide seen from 2 km.
+//!
+//! Each vertex takes the river vertex whose channel reaches farthest past it (its half width
+//! minus the distance), found by a search outwards from the rivers over the mesh's edges that
+//! visits vertices in order of that margin. Only channels shown as water ([`EDGES_PER_WIDTH`])
+//! and wider than an edge at their vertex carve: elsewhere the search finds nothing and the
+//! mesh is returned as it is. Vertices already under water (the sea, lakes, a river's own
+//! channel where the split rule put them below its surface) keep theirs.
+//!
+//! A function of the mesh alone, serial where order matters: the same bits whichever backend
+//! adapted the mesh. Views and renders carve the adapted mesh; tiles and elevation rasters keep
+//! the split rule's ground.
+
+use super::water::{channel_halves, SHALLOW_RIVER_M};
+use crate::mesh::split::position::lift;
+use crate::mesh::{Mesh, VertexFlags, NONE};
+use std::borrow::Cow;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+/// `mesh` with its wide rivers' channels carved (see the module's doc); `triangles` are its
+/// faces ([`Mesh::triangles`]). Borrowed when nothing is carved.
+pub fn carved<'a>(mesh: &'a Mesh, triangles: &[[u32; 3]]) -> Cow<'a, Mesh> {
+    let beds = channel_beds(mesh, triangles);
+    if beds.is_empty() {
+        return Cow::Borrowed(mesh);
+    }
+    let mut out = mesh.clone();
+    for (v, ground, water) in beds {
+        let vert = &mut out.vertices[v as usize];
+        vert.pos = lift(vert.p(), mesh.radius, ground).to_array();
+        vert.ground = ground;
+        vert.water = water;
+    }
+    Cow::Owned(out)
+}
+
+/// Depth (m) of a channel `half` metres wide on each side of its centre line.
+fn centre_depth(half: f64) -> f64 {
+    use crate::planet::network::{channel_depth_m, discharge_of_width};
+    channel_depth_m(discharge_of_width(2.0 * half))
+}
+
+/// The carved vertices: `(vertex, ground, water)`, in vertex order.
+pub fn channel_beds(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<(u32, f64, f64)> {
+    let (half, shortest) = channel_halves(mesh, triangles);
+    let n = mesh.vertices.len();
+    let source = |v: usize| half[v].filter(|&h| h > 0.0 && h * 2.0 * super::water::EDGES_PER_WIDTH >= shortest[v]);
+    if !(0..n).any(|v| source(v).is_some_and(|h| h > shortest[v])) {
+        return Vec::new();
+    }
+    let around = Neighbours::new(n, triangles);
+    let vs = &mesh.vertices;
+    let dist = |a: u32, b: u32| vs[a as usize].p().normalize().distance(vs[b as usize].p().normalize()) * mesh.radius;
+    // Per vertex: the largest margin (half width minus distance) of a channel reaching it, and
+    // that channel's river vertex.
+    let mut best: Vec<(f64, u32)> = vec![(f64::NEG_INFINITY, NONE); n];
+    let mut queue = BinaryHeap::new();
+    for (v, slot) in best.iter_mut().enumerate() {
+        if let Some(h) = source(v) {
+            *slot = (h, v as u32);
+            queue.push((h.to_bits(), Reverse(v as u32)));
+        }
+    }
+    // Margins pushed are positive, whose bits order as the numbers do; ties go to the lower
+    // vertex id.
+    while let Some((bits, Reverse(v))) = queue.pop() {
+        let (m, s) = best[v as usize];
+        if m.to_bits() != bits {
+            continue; // reached since with a larger margin
+        }
+        let h = source(s as usize).expect("a channel's river vertex");
+        for &u in around.of(v) {
+            let margin = h - dist(u, s);
+            if margin > best[u as usize].0 {
+                best[u as usize] = (margin, s);
+                if margin > 0.0 {
+                    queue.push((margin.to_bits(), Reverse(u)));
+                }
+            }
+        }
+    }
+    let mut beds = Vec::new();
+    for (v, &(margin, s)) in best.iter().enumerate() {
+        let vert = &vs[v];
+        if margin <= 0.0 || s == v as u32 || vert.submerged() || vert.flags.contains(VertexFlags::LAKE) {
+            continue;
+        }
+        let river = &vs[s as usize];
+        let h = source(s as usize).expect("a channel's river vertex");
+        let level = if river.submerged() { river.water } else { river.ground + SHALLOW_RIVER_M };
+        let across = (h - margin) / h;
+        let bed = level - centre_depth(h) * (1.0 - across * across);
+        let ground = vert.ground.min(bed);
+        if ground < level {
+            beds.push((v as u32, ground, level));
+        }
+    }
+    beds
+}
+
+/// Vertex neighbours over a list of triangles, in compressed rows (an edge shared by two faces
+/// is listed twice; the search does not mind).
+struct Neighbours {
+    offsets: Vec<u32>,
+    list: Vec<u32>,
+}
+
+impl Neighbours {
+    fn new(n: usize, triangles: &[[u32; 3]]) -> Neighbours {
+        let mut offsets = vec![0u32; n + 1];
+        for t in triangles {
+            for &v in t {
+                offsets[v as usize + 1] += 2;
+            }
+        }
+        for i in 0..n {
+            offsets[i + 1] += offsets[i];
+        }
+        let mut fill = offsets.clone();
+        let mut list = vec![0u32; offsets[n] as usize];
+        for t in triangles {
+            for k in 0..3 {
+                let v = t[k] as usize;
+                let slot = fill[v] as usize;
+                list[slot] = t[(k + 1) % 3];
+                list[slot + 1] = t[(k + 2) % 3];
+                fill[v] += 2;
+            }
+        }
+        Neighbours { offsets, list }
+    }
+
+    fn of(&self, v: u32) -> &[u32] {
+        &self.list[self.offsets[v as usize] as usize..self.offsets[v as usize + 1] as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::Vertex;
+    use glam::DVec3;
+
+    /// A strip of ground 2 km long and 1 km across on a planet of radius 1,000 km, vertices
+    /// every 25 m, banks 4 m above the water of a river along its middle row with channels
+    /// `width` metres wide.
+    fn strip(width: f32) -> (Mesh, Vec<[u32; 3]>, usize) {
+        let r = 1_000_000.0;
+        let (cols, rows, step) = (81usize, 41usize, 25.0);
+        let mid = rows / 2;
+        let mut vs = Vec::new();
+        let mut points = Vec::new();
+        for i in 0..rows {
+            for j in 0..cols {
+                let (x, y) = (j as f64 * step / r, (i as f64 - mid as f64) * step / r);
+                let dir = DVec3::new(1.0, x, y).normalize();
+                let mut v = Vertex::new(dir * r, (i * cols + j) as u32);
+                v.ground = 10.0;
+                v.water = 10.0;
+                if i == mid {
+                    v.ground = 3.0;
+                    v.water = 6.0;
+                    v.flags = VertexFlags::RIVER;
+                    points.push((dir, width));
+                }
+                vs.push(v);
+            }
+        }
+        let mut tris = Vec::new();
+        for i in 0..rows - 1 {
+            for j in 0..cols - 1 {
+                let (a, b, c, d) = (i * cols + j, i * cols + j + 1, (i + 1) * cols + j, (i + 1) * cols + j + 1);
+                tris.push([a as u32, b as u32, d as u32]);
+                tris.push([a as u32, d as u32, c as u32]);
+            }
+        }
+        let channels = crate::mesh::channels::Channels::new(&points, 100.0, 100.0, r).unwrap();
+        let mesh = Mesh { radius: r, vertices: vs, channels: Some(std::sync::Arc::new(channels)), ..Mesh::default() };
+        (mesh, tris, cols)
+    }
+
+    #[test]
+    fn a_wide_channel_is_carved_to_its_width() {
+        let (mesh, tris, cols) = strip(390.0);
+        let carved = carved(&mesh, &tris);
+        let vs = &carved.vertices;
+        // Down the middle column: under water within 195 m of the river, dry beyond.
+        let column = 40;
+        let mid = vs.len() / cols / 2;
+        for i in 0..vs.len() / cols {
+            let v = &vs[i * cols + column];
+            let off = (i as f64 - mid as f64).abs() * 25.0;
+            if off == 0.0 {
+                assert_eq!((v.ground, v.water), (3.0, 6.0), "the river vertex keeps its bed");
+            } else if off < 195.0 {
+                assert_eq!(v.water, 6.0, "{off} m out");
+                // A parabola under the river's level, the channel's depth at the middle.
+                let depth = centre_depth(195.0) * (1.0 - (off / 195.0).powi(2));
+                assert!((v.ground - (6.0 - depth)).abs() < 1e-3, "{off} m out: {}", v.ground);
+                assert!((v.p().length() - (mesh.radius + v.ground)).abs() < 1e-6);
+            } else {
+                assert_eq!((v.ground, v.water), (10.0, 10.0), "{off} m out");
+            }
+        }
+        // The water surface covers the channel flat at the river's level; the shore lies
+        // between the last carved vertex and the first bank.
+        let levels = super::super::water::water_levels(&carved, &tris);
+        let wet = (0..vs.len() / cols).filter(|&i| levels[i * cols + column] > vs[i * cols + column].ground).count();
+        assert_eq!(wet, 15, "7 carved vertices on each side and the river's");
+        // The same bits again, and nothing carved for a channel narrower than the edges.
+        assert_eq!(carved.vertices, super::carved(&mesh, &tris).vertices);
+        let (narrow, tris, _) = strip(40.0);
+        assert!(matches!(super::carved(&narrow, &tris), Cow::Borrowed(_)));
+        assert!(channel_beds(&narrow, &tris).is_empty());
+    }
+}
