@@ -11,7 +11,7 @@
 //!
 //! Each vertex takes the river vertex whose channel reaches farthest past it (its half width
 //! minus the distance), found by a search outwards from the rivers over the mesh's edges that
-//! visits vertices in order of that margin. Only channels shown as water ([`EDGES_PER_WIDTH`])
+//! visits vertices in order of that margin. Only channels shown as water ([`super::water::shows_channel`])
 //! and wider than an edge at their vertex carve: elsewhere the search finds nothing and the
 //! mesh is returned as it is. Vertices already under water (the sea, lakes, a river's own
 //! channel where the split rule put them below its surface) keep theirs.
@@ -20,7 +20,7 @@
 //! adapted the mesh. Views and renders carve the adapted mesh; tiles and elevation rasters keep
 //! the split rule's ground.
 
-use super::water::{channel_halves, SHALLOW_RIVER_M};
+use super::water::{channel_halves, river_level, shows_channel};
 use crate::mesh::split::position::lift;
 use crate::mesh::{Mesh, VertexFlags, NONE};
 use std::borrow::Cow;
@@ -54,7 +54,7 @@ fn centre_depth(half: f64) -> f64 {
 pub fn channel_beds(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<(u32, f64, f64)> {
     let (half, shortest) = channel_halves(mesh, triangles);
     let n = mesh.vertices.len();
-    let source = |v: usize| half[v].filter(|&h| h > 0.0 && h * 2.0 * super::water::EDGES_PER_WIDTH >= shortest[v]);
+    let source = |v: usize| half[v].filter(|&h| shows_channel(h, shortest[v]));
     if !(0..n).any(|v| source(v).is_some_and(|h| h > shortest[v])) {
         return Vec::new();
     }
@@ -97,7 +97,7 @@ pub fn channel_beds(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<(u32, f64, f64)>
         }
         let river = &vs[s as usize];
         let h = source(s as usize).expect("a channel's river vertex");
-        let level = if river.submerged() { river.water } else { river.ground + SHALLOW_RIVER_M };
+        let level = river_level(river);
         let across = (h - margin) / h;
         let bed = level - centre_depth(h) * (1.0 - across * across);
         let ground = vert.ground.min(bed);
@@ -109,7 +109,8 @@ pub fn channel_beds(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<(u32, f64, f64)>
 }
 
 /// Vertex neighbours over a list of triangles, in compressed rows (an edge shared by two faces
-/// is listed twice; the search does not mind).
+/// is listed twice; the search does not mind). Not [`Mesh::adjacency`]: that lists the mesh's
+/// edges, while the search follows the faces its caller draws.
 struct Neighbours {
     offsets: Vec<u32>,
     list: Vec<u32>,

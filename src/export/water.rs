@@ -116,6 +116,22 @@ pub fn channel_halves(mesh: &Mesh, triangles: &[[u32; 3]]) -> (Vec<Option<f64>>,
     (mesh.vertices.par_iter().map(|v| half_width(mesh, v)).collect(), shortest_edges(mesh, triangles))
 }
 
+/// Whether a channel `half` metres wide on each side shows as water at a vertex whose shortest
+/// edge is `shortest` metres: it flows, and is at least 1/[`EDGES_PER_WIDTH`] of that edge.
+pub fn shows_channel(half: f64, shortest: f64) -> bool {
+    half > 0.0 && 2.0 * half * EDGES_PER_WIDTH >= shortest
+}
+
+/// The water level (m above the base sphere) a flowing river vertex carries: its own water,
+/// [`SHALLOW_RIVER_M`] over its ground where the mesh gives it none.
+pub fn river_level(v: &Vertex) -> f64 {
+    if v.submerged() {
+        v.water
+    } else {
+        v.ground + SHALLOW_RIVER_M
+    }
+}
+
 /// Width (m) of a river vertex with no base-mesh river near it.
 pub const SMALL_STREAM_M: f32 = 2.0;
 
@@ -133,16 +149,9 @@ pub fn water_levels(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<f64> {
     let (half, shortest) = channel_halves(mesh, triangles);
     // A flowing river's vertex carries its channel's water, SHALLOW_RIVER_M deep where the
     // mesh gives it none; a dry bed carries none, nor a river too narrow for the faces at it.
-    let shown = |v: usize| half[v].is_none_or(|h| h > 0.0 && 2.0 * h * EDGES_PER_WIDTH >= shortest[v]);
+    let shown = |v: usize| half[v].is_none_or(|h| shows_channel(h, shortest[v]));
     let wet = |v: usize| (vertices[v].submerged() || half[v].is_some()) && shown(v);
-    let own = |v: usize| {
-        let vert = &vertices[v];
-        if half[v].is_some() && !vert.submerged() {
-            vert.ground + SHALLOW_RIVER_M
-        } else {
-            vert.water
-        }
-    };
+    let own = |v: usize| if half[v].is_some() { river_level(&vertices[v]) } else { vertices[v].water };
     let mut level: Vec<f64> =
         (0..vertices.len()).into_par_iter().map(|v| if wet(v) { own(v) } else { f64::NEG_INFINITY }).collect();
     // The level each face's water gives each of its dry corners, in parallel; the highest per
