@@ -10,22 +10,22 @@
 //! shore lies where the banks rise above it: a 600 m river is 600 m wide seen from 2 km.
 //!
 //! Each vertex takes the river vertex whose channel reaches farthest past it (its half width
-//! minus the distance), found by a search outwards from the rivers over the mesh's edges that
-//! visits vertices in order of that margin. Only channels shown as water ([`super::water::shows_channel`])
-//! and wider than an edge at their vertex carve: elsewhere the search finds nothing and the
-//! mesh is returned as it is. Vertices already under water (the sea, lakes, a river's own
-//! channel where the split rule put them below its surface) keep theirs.
+//! minus the distance): every channel reaches the vertices within its half width that the
+//! mesh's edges connect to its river vertex through such vertices. Only channels shown as
+//! water ([`super::water::shows_channel`]) and wider than an edge at their vertex carve:
+//! elsewhere nothing is reached and the mesh is returned as it is. Vertices already under
+//! water (the sea, lakes, a river's own channel where the split rule put them below its
+//! surface) keep theirs.
 //!
-//! A function of the mesh alone, serial where order matters: the same bits whichever backend
-//! adapted the mesh. Views and renders carve the adapted mesh; tiles and elevation rasters keep
-//! the split rule's ground.
+//! A function of the mesh near each vertex alone, without vertex ids: the same bits whichever
+//! backend adapted the mesh, and the same for a part of a triangulation given a margin around
+//! it. Views and renders carve the adapted mesh, 3D Tiles their cell with its surroundings
+//! (`tiles/carve.rs`); elevation rasters keep the split rule's ground.
 
 use super::water::{channel_halves, river_level, shows_channel};
 use crate::mesh::split::position::lift;
-use crate::mesh::{Mesh, VertexFlags, NONE};
+use crate::mesh::{Mesh, Vertex, VertexFlags};
 use std::borrow::Cow;
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
 
 /// `mesh` with its wide rivers' channels carved (see the module's doc); `triangles` are its
 /// faces ([`Mesh::triangles`]). Borrowed when nothing is carved.
@@ -36,12 +36,17 @@ pub fn carved<'a>(mesh: &'a Mesh, triangles: &[[u32; 3]]) -> Cow<'a, Mesh> {
     }
     let mut out = mesh.clone();
     for (v, ground, water) in beds {
-        let vert = &mut out.vertices[v as usize];
-        vert.pos = lift(vert.p(), mesh.radius, ground).to_array();
-        vert.ground = ground;
-        vert.water = water;
+        lay_bed(&mut out.vertices[v as usize], mesh.radius, ground, water);
     }
     Cow::Owned(out)
+}
+
+/// Lays `vert` on a channel's bed: its ground at `ground`, its water at `water` (m above the
+/// base sphere of `radius`).
+pub fn lay_bed(vert: &mut Vertex, radius: f64, ground: f64, water: f64) {
+    vert.pos = lift(vert.p(), radius, ground).to_array();
+    vert.ground = ground;
+    vert.water = water;
 }
 
 /// Depth (m) of a channel `half` metres wide on each side of its centre line.
@@ -51,53 +56,69 @@ fn centre_depth(half: f64) -> f64 {
 }
 
 /// The carved vertices: `(vertex, ground, water)`, in vertex order.
+///
+/// Each channel that carves (shown as water and wider than the shortest edge at its vertex)
+/// reaches the vertices within its half width that the mesh's edges connect to it through
+/// others within that width; a vertex takes the channel whose margin (half width minus
+/// distance) is largest, ties going to the lower water level and then to the river vertex
+/// whose position's bits sort first. Nothing here depends on vertex ids or on the mesh
+/// beyond twice the widest channel's half width and one ring of faces, so a part of a
+/// triangulation with that margin around it carves its inside exactly as the whole would
+/// (3D Tiles, `tiles/carve.rs`).
 pub fn channel_beds(mesh: &Mesh, triangles: &[[u32; 3]]) -> Vec<(u32, f64, f64)> {
     let (half, shortest) = channel_halves(mesh, triangles);
-    let n = mesh.vertices.len();
-    let source = |v: usize| half[v].filter(|&h| shows_channel(h, shortest[v]));
-    if !(0..n).any(|v| source(v).is_some_and(|h| h > shortest[v])) {
+    let vs = &mesh.vertices;
+    let sources: Vec<(u32, f64)> = (0..vs.len())
+        .filter_map(|v| {
+            let h = half[v]?;
+            (shows_channel(h, shortest[v]) && h > shortest[v]).then_some((v as u32, h))
+        })
+        .collect();
+    if sources.is_empty() {
         return Vec::new();
     }
-    let around = Neighbours::new(n, triangles);
-    let vs = &mesh.vertices;
-    let dist = |a: u32, b: u32| vs[a as usize].p().normalize().distance(vs[b as usize].p().normalize()) * mesh.radius;
-    // Per vertex: the largest margin (half width minus distance) of a channel reaching it, and
-    // that channel's river vertex.
-    let mut best: Vec<(f64, u32)> = vec![(f64::NEG_INFINITY, NONE); n];
-    let mut queue = BinaryHeap::new();
-    for (v, slot) in best.iter_mut().enumerate() {
-        if let Some(h) = source(v) {
-            *slot = (h, v as u32);
-            queue.push((h.to_bits(), Reverse(v as u32)));
-        }
-    }
-    // Margins pushed are positive, whose bits order as the numbers do; ties go to the lower
-    // vertex id.
-    while let Some((bits, Reverse(v))) = queue.pop() {
-        let (m, s) = best[v as usize];
-        if m.to_bits() != bits {
-            continue; // reached since with a larger margin
-        }
-        let h = source(s as usize).expect("a channel's river vertex");
-        for &u in around.of(v) {
-            let margin = h - dist(u, s);
-            if margin > best[u as usize].0 {
-                best[u as usize] = (margin, s);
-                if margin > 0.0 {
-                    queue.push((margin.to_bits(), Reverse(u)));
+    let around = Neighbours::new(vs.len(), triangles);
+    let unit = |v: u32| vs[v as usize].p().normalize();
+    // The order channels win a vertex in: larger margin, lower level, position bits.
+    let rank = |k: usize| (river_level(&vs[sources[k].0 as usize]), vs[sources[k].0 as usize].pos.map(f64::to_bits));
+    let beats = |m: f64, k: usize, (bm, bk): (f64, usize)| {
+        m > bm
+            || (m == bm && {
+                let ((la, pa), (lb, pb)) = (rank(k), rank(bk));
+                la.total_cmp(&lb).then(pa.cmp(&pb)).is_lt()
+            })
+    };
+    let mut best: Vec<(f64, usize)> = vec![(f64::NEG_INFINITY, usize::MAX); vs.len()];
+    let mut seen = vec![usize::MAX; vs.len()];
+    let mut stack = Vec::new();
+    for (k, &(s, h)) in sources.iter().enumerate() {
+        let centre = unit(s);
+        let margin = |v: u32| h - unit(v).distance(centre) * mesh.radius;
+        seen[s as usize] = k;
+        stack.push((s, h));
+        while let Some((v, m)) = stack.pop() {
+            if beats(m, k, best[v as usize]) {
+                best[v as usize] = (m, k);
+            }
+            for &u in around.of(v) {
+                if seen[u as usize] != k {
+                    seen[u as usize] = k;
+                    let mu = margin(u);
+                    if mu > 0.0 {
+                        stack.push((u, mu));
+                    }
                 }
             }
         }
     }
     let mut beds = Vec::new();
-    for (v, &(margin, s)) in best.iter().enumerate() {
+    for (v, &(margin, k)) in best.iter().enumerate() {
         let vert = &vs[v];
-        if margin <= 0.0 || s == v as u32 || vert.submerged() || vert.flags.contains(VertexFlags::LAKE) {
+        if k == usize::MAX || sources[k].0 == v as u32 || vert.submerged() || vert.flags.contains(VertexFlags::LAKE) {
             continue;
         }
-        let river = &vs[s as usize];
-        let h = source(s as usize).expect("a channel's river vertex");
-        let level = river_level(river);
+        let (s, h) = sources[k];
+        let level = river_level(&vs[s as usize]);
         let across = (h - margin) / h;
         let bed = level - centre_depth(h) * (1.0 - across * across);
         let ground = vert.ground.min(bed);
@@ -149,7 +170,6 @@ impl Neighbours {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::Vertex;
     use glam::DVec3;
 
     /// A strip of ground 2 km long and 1 km across on a planet of radius 1,000 km, vertices

@@ -21,8 +21,9 @@
 //! stands (sea, lakes, rivers wide enough for the grid's triangles) and NaN, the file's no-data
 //! value, where the ground is dry.
 
+use super::carve::channel_beds;
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{PlanetTiles, Refiner, ROOTS};
+use super::tiles::{surface_mesh, PlanetTiles, Refiner, ROOTS};
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
@@ -310,6 +311,8 @@ struct Surface<'a> {
     refiner: Option<Refiner<'a>>,
     /// Faces of the refined (conforming) mesh that may meet the rectangle.
     leaves: Vec<[u32; 3]>,
+    /// Ground and water (m above the base sphere) of the vertices a channel carved.
+    beds: HashMap<u32, (f64, f64)>,
 }
 
 impl<'a> Surface<'a> {
@@ -319,7 +322,12 @@ impl<'a> Surface<'a> {
         let [dx, dy] = cell;
         let params = tiles.params();
         let r = params.radius_m;
-        let region = Region::new(rect);
+        // Where a channel nearby may be carved, the surface is refined and carved past the
+        // rectangle by a margin, so that a block or a tile carves its cells as a larger
+        // request would (`export/carve.rs`).
+        let margin = carve_margin(tiles, rect, cell, rows);
+        let carving = margin.map_or(rect, |m| grown(rect, m / r));
+        let region = Region::new(carving);
         let mut refiner = tiles.refiner();
         // About one split per cell at the finest, plus the border's.
         let span = |d: f64, c: f64| ((d / c).ceil().min(1e6) as usize) + 8;
@@ -362,14 +370,22 @@ impl<'a> Surface<'a> {
         // faces do. The index lists the base faces near the rectangle and every face a split
         // added.
         let mesh = refiner.mesh();
-        let leaves: Vec<[u32; 3]> = tiles
+        let mut leaves: Vec<[u32; 3]> = tiles
             .faces()
-            .candidates(&rect, mesh.faces.len())
+            .candidates(&carving, mesh.faces.len())
             .into_iter()
             .map(|f| mesh.corners(f))
             .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
             .collect();
-        Surface { tiles, refiner: Some(refiner), leaves }
+        let mut beds = HashMap::default();
+        if margin.is_some() {
+            let (around, ids) = surface_mesh(mesh, &leaves);
+            let triangles = around.triangles();
+            beds = channel_beds(&around, &triangles).into_iter().map(|(v, g, w)| (ids[v as usize], (g, w))).collect();
+            let inside = Region::new(rect);
+            leaves.retain(|c| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())));
+        }
+        Surface { tiles, refiner: Some(refiner), leaves, beds }
     }
 
     fn refiner(&self) -> &Refiner<'a> {
@@ -402,16 +418,25 @@ impl<'a> Surface<'a> {
             .collect();
         let row_map = req.row_map();
         // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
+        let beds = &self.beds;
         let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
             let wgt = weights(n, dirs[i]);
-            let vs = leaf.map(|v| &mesh.vertices[v as usize]);
-            let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].ground).sum();
+            // Ground and water of each corner, as carved.
+            let vs = leaf.map(|v| {
+                let vert = &mesh.vertices[v as usize];
+                if beds.is_empty() {
+                    (vert.ground, vert.water)
+                } else {
+                    beds.get(&v).copied().unwrap_or((vert.ground, vert.water))
+                }
+            });
+            let submerged = |k: usize| vs[k].1 > vs[k].0;
+            let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].0).sum();
             let mut water = f32::NAN;
             // Water: the face's highest standing water at its dry corners (as `water.rs` does).
-            let wet = vs.iter().filter(|v| v.submerged()).map(|v| v.water).fold(f64::NEG_INFINITY, f64::max);
+            let wet = (0..3).filter(|&k| submerged(k)).map(|k| vs[k].1).fold(f64::NEG_INFINITY, f64::max);
             if wet > f64::NEG_INFINITY {
-                let level: f64 =
-                    (0..3).map(|k| f64::from(wgt[k]) * if vs[k].submerged() { vs[k].water } else { wet }).sum();
+                let level: f64 = (0..3).map(|k| f64::from(wgt[k]) * if submerged(k) { vs[k].1 } else { wet }).sum();
                 if level > g {
                     water = (level - sea) as f32;
                 }
@@ -531,6 +556,54 @@ impl Drop for Surface<'_> {
             self.tiles.recycle(refiner);
         }
     }
+}
+
+/// How far (m) past `rect` a surface refined for cells of `cell` degrees must be refined and
+/// carved so that its cells' carving does not depend on where the refinement stops: twice the
+/// widest channel that may reach it ([`crate::export::carve`]) and two of the coarsest leaves.
+/// `None` where no channel near it is wider than a quarter of the finest leaves' edge (none is
+/// shorter): nothing can be carved there.
+fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Option<f64> {
+    let params = tiles.params();
+    let r = params.radius_m;
+    let channels = tiles.planet().mesh.channels.as_deref()?;
+    // The leaves' targets (`Surface::refine`) at the rectangle's most polar and most
+    // equatorial latitudes (a degree more poleward for the nodes reaching past it).
+    let (s, n) = (rect.south.clamp(-90.0, 90.0), rect.north.clamp(-90.0, 90.0));
+    let polar = s.abs().max(n.abs());
+    let equatorial = if s <= 0.0 && n >= 0.0 { 0.0 } else { s.abs().min(n.abs()) };
+    let target = |lat: f64| {
+        let ew = dx.to_radians() * r * lat.min(90.0).to_radians().cos();
+        let ns = match rows {
+            Rows::Degrees => dy.to_radians() * r,
+            Rows::Mercator => ew,
+        };
+        ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m)
+    };
+    let (finest, coarsest) = (target(polar + 1.0), target(equatorial));
+    let centre = crate::geo::direction(0.5 * (s + n), 0.5 * (rect.west + rect.east));
+    let angle = |d: DVec3| centre.cross(d).length().atan2(centre.dot(d));
+    let spread = [s, 0.5 * (s + n), n]
+        .iter()
+        .flat_map(|&lat| [rect.west, 0.5 * (rect.west + rect.east), rect.east].map(|lon| (lat, lon)))
+        .map(|(lat, lon)| angle(crate::geo::direction(lat, lon)))
+        .fold(0.0, f64::max);
+    let spread = if rect.east - rect.west >= 180.0 { std::f64::consts::PI } else { spread * 1.1 };
+    let near = spread + (f64::from(channels.widest()) + 2.0 * LEAF_EDGE_CELLS * coarsest) / r;
+    let half = 0.5 * f64::from(channels.widest_near(centre, near));
+    (half > 0.25 * finest).then_some(2.0 * half + 2.0 * LEAF_EDGE_CELLS * coarsest)
+}
+
+/// `rect` grown by `angle` radians on every side (to every longitude near a pole).
+fn grown(rect: GeoBounds, angle: f64) -> GeoBounds {
+    let d = angle.to_degrees();
+    let (south, north) = ((rect.south - d).max(-90.0), (rect.north + d).min(90.0));
+    let polar = south.abs().max(north.abs());
+    if polar >= 89.0 || rect.east - rect.west + 2.0 * d / polar.to_radians().cos() >= 360.0 {
+        return GeoBounds { west: -180.0, east: 180.0, south, north };
+    }
+    let dl = d / polar.to_radians().cos();
+    GeoBounds { west: rect.west - dl, east: rect.east + dl, south, north }
 }
 
 /// A block's rectangle as half-spaces: the wedge between its west and east meridians (when

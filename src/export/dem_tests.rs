@@ -152,3 +152,72 @@ fn regions_are_refined_whatever_lies_outside_them() {
         assert!(worst < 8.0, "{west}..{east}: a face edge {worst:.1} cells long");
     }
 }
+
+/// Longest run of `wet` cells in each row (or column with `columns`) of a `w x h` grid, for
+/// the rows that have any.
+fn wet_runs(wet: &[bool], w: usize, h: usize, columns: bool) -> Vec<usize> {
+    let (lines, along) = if columns { (w, h) } else { (h, w) };
+    let at = |line: usize, k: usize| if columns { wet[k * w + line] } else { wet[line * w + k] };
+    (0..lines)
+        .map(|line| {
+            let (mut best, mut run) = (0, 0);
+            for k in 0..along {
+                run = if at(line, k) { run + 1 } else { 0 };
+                best = best.max(run);
+            }
+            best
+        })
+        .filter(|&b| b > 0)
+        .collect()
+}
+
+#[test]
+fn dems_carve_wide_rivers_to_their_width_whatever_their_blocks() {
+    use crate::export::water::channel_width;
+    let t = tiles();
+    let base = &t.planet().mesh;
+    let sea = t.params().sea_level_m;
+    // The test planet's widest river away from the sea, on a grid of cells a twentieth of it,
+    // its vertex on the border between two blocks of 512 columns.
+    let (dir, width) = base
+        .vertices
+        .iter()
+        .filter(|v| v.ground > sea + 20.0)
+        .filter_map(|v| Some((v.p(), channel_width(base, v)?)))
+        .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+    let (lat, lon) = lat_lon(dir);
+    let cell = (width / 20.0 / t.params().radius_m).to_degrees();
+    let (cols, rows) = (700u32, 200u32);
+    let (w0, n0) = (lon - 512.0 * cell, lat + 100.0 * cell);
+    let bbox = |c0: u32, r0: u32, c1: u32, r1: u32| {
+        let (w, e) = (w0 + f64::from(c0) * cell, w0 + f64::from(c1) * cell);
+        format!("{w},{},{e},{}", n0 - f64::from(r1) * cell, n0 - f64::from(r0) * cell)
+    };
+    let req = |c0, r0, c1, r1| DemRequest::new(&bbox(c0, r0, c1, r1), c1 - c0, Some(r1 - r0), DEFAULT_MAX_DEM_PIXELS);
+    let big = super::sample_dem(t, &req(0, 0, cols, rows).unwrap());
+    // Across the river the water is as wide as its channel: a straight band of width `W`
+    // crossing rows and columns at any angle has runs `r` and `c` with `1/r² + 1/c² = 1/W²`.
+    let wet: Vec<bool> = big.water.iter().zip(&big.ground).map(|(w, g)| !w.is_nan() && *w > 0.0 && w > g).collect();
+    let median = |mut v: Vec<usize>| {
+        v.sort_unstable();
+        v.get(v.len() / 2).copied().unwrap_or(0) as f64
+    };
+    let (w, h) = (cols as usize, rows as usize);
+    let (r, c) = (median(wet_runs(&wet, w, h, false)), median(wet_runs(&wet, w, h, true)));
+    let across = (r.powi(-2) + c.powi(-2)).powf(-0.5);
+    assert!((14.0..=26.0).contains(&across), "{across} cells across a channel of 20 ({width} m): runs {r}, {c}");
+    // A window across the blocks' border has the same cells, the carving included.
+    let (c0, r0, c1, r1) = (450, 50, 600, 150);
+    let small = super::sample_dem(t, &req(c0, r0, c1, r1).unwrap());
+    let (mut worst, mut differ, mut wet_cells) = (0f32, 0, 0);
+    for r in 0..r1 - r0 {
+        for c in 0..c1 - c0 {
+            let (i, j) = (((r0 + r) * cols + c0 + c) as usize, (r * (c1 - c0) + c) as usize);
+            worst = worst.max((big.ground[i] - small.ground[j]).abs());
+            differ += usize::from(big.water[i].is_nan() != small.water[j].is_nan());
+            wet_cells += usize::from(wet[i]);
+        }
+    }
+    assert!(worst < 1e-3 && differ == 0, "{worst} m apart, {differ} cells wet in one only");
+    assert!(wet_cells > 200, "{wet_cells} wet cells in the window");
+}

@@ -18,6 +18,8 @@ use glam::DVec3;
 pub struct Channels {
     /// Farthest a point still gives its width, in degrees of arc.
     reach_deg: f64,
+    /// The widest channel (m).
+    widest: f32,
     points: Buckets<([f64; 3], f32)>,
 }
 
@@ -32,9 +34,10 @@ impl Channels {
         }
         let cell_deg = (cell_m / radius).to_degrees();
         let items = points.iter().map(|&(d, w)| (d, (d.normalize().to_array(), w))).collect();
+        let widest = points.iter().map(|&(_, w)| w).fold(0.0, f32::max);
         let points = Buckets::new(cell_deg, items);
         let reach_deg = (reach_m / radius).to_degrees().max(points.cell_deg());
-        Some(Channels { reach_deg, points })
+        Some(Channels { reach_deg, widest, points })
     }
 
     /// Width (m) of the base-mesh river vertex nearest to `dir` (a unit direction), if one lies
@@ -75,6 +78,41 @@ impl Channels {
         best.map(|(_, w)| w)
     }
 
+    /// The widest channel (m).
+    pub fn widest(&self) -> f32 {
+        self.widest
+    }
+
+    /// The widest channel (m) a vertex within `angle` (radians) of unit direction `dir` can
+    /// take by [`Channels::width_at`]: the widest point within that angle plus the reach; 0
+    /// where none.
+    pub fn widest_near(&self, dir: DVec3, angle: f64) -> f32 {
+        let g = &self.points;
+        let (cell_deg, rows, cols) = (g.cell_deg(), g.rows(), g.cols());
+        let within_deg = angle.to_degrees() + self.reach_deg;
+        if within_deg >= 180.0 {
+            return self.widest;
+        }
+        let max_chord = (within_deg.to_radians() * 0.5).sin() * 2.0;
+        let (row, col) = g.row_col(dir);
+        let k = (within_deg / cell_deg).ceil() as usize + 1;
+        let edge_lat = crate::geo::lat_lon(dir).0.abs() + (k as f64 + 0.5) * cell_deg;
+        let span =
+            if edge_lat >= 89.0 { cols } else { ((k as f64 / edge_lat.to_radians().cos()).ceil() as usize).min(cols) };
+        let ranges = g.column_ranges(col, span);
+        let mut widest = 0.0f32;
+        for r in row.saturating_sub(k)..=(row + k).min(rows - 1) {
+            for &(c0, c1) in ranges.iter().filter(|(c0, c1)| c0 <= c1) {
+                for &(p, w) in g.row_items(r, c0, c1) {
+                    if DVec3::from_array(p).distance(dir) <= max_chord {
+                        widest = widest.max(w);
+                    }
+                }
+            }
+        }
+        widest
+    }
+
     /// Bytes held.
     pub fn bytes(&self) -> usize {
         self.points.bytes()
@@ -101,6 +139,18 @@ mod tests {
         let polar = Channels::new(&[(direction(89.5, 10.0), 5.0)], 50_000.0, 150_000.0, r).unwrap();
         assert_eq!(polar.width_at(direction(89.5, -170.0)), Some(5.0));
         assert!(Channels::new(&[], 1.0, 1.0, r).is_none());
+        // The widest any vertex near a point can take: the reach (150 km, 1.35°) added.
+        let near = |lat: f64, lon: f64, deg: f64| c.widest_near(direction(lat, lon), f64::to_radians(deg));
+        assert_eq!(near(0.0, 0.5, 0.1), 300.0);
+        assert_eq!(near(0.0, -1.0, 0.1), 100.0);
+        assert_eq!(near(0.0, -1.0, 0.7), 300.0);
+        assert_eq!(near(0.0, -3.0, 0.1), 0.0);
+        assert_eq!(near(60.0, -179.0, 0.1), 7.0);
+        assert_eq!(near(-60.0, 0.0, 180.0), 300.0);
+        for lon in [-0.3, 0.2, 0.9, 1.4] {
+            let dir = direction(0.1, lon);
+            assert!(c.width_at(dir).unwrap_or(0.0) <= c.widest_near(dir, 0.0));
+        }
         // The nearest point wins even when a farther one lies in a nearer cell's search.
         let pair = [(direction(0.0, 0.0), 1.0), (direction(0.0, 0.9), 2.0)];
         let grid = Channels::new(&pair, 20_000.0, 150_000.0, r).unwrap();

@@ -231,7 +231,7 @@ fn render(
 /// positions and normals through meshopt's filters, elevation tiles' PNG rows Paeth-filtered,
 /// steep land bare rock; 18: elevation tiles from cells of 6 pixels; 19: the climate's monsoon reach and wet land's
 /// gain), so that caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "20";
+pub const ANSWERS_REVISION: &str = "21";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -9,9 +9,11 @@
 //! so neighbouring tiles light their common border alike, bit for bit.
 
 use super::bounds::{local_axes, OrientedBox};
+use super::carve::cell_beds;
 use super::key::TileKey;
 use super::ring::border_normals;
-use super::tree::{Refiner, ROOTS};
+use super::tree::{surface_mesh, Refiner, ROOTS};
+use crate::export::carve::lay_bed;
 use crate::export::colour_mip::ColourMip;
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
 use crate::export::view::water_mesh;
@@ -85,11 +87,21 @@ pub fn tile_content(
     let (cell, axes) = cell_frame(refiner, key);
     let mut leaves = Vec::with_capacity(1 << spec.content_depth);
     refiner.descendants(cell, spec.content_depth, &mut leaves);
-    let (surface, ids) = surface_mesh(refiner.mesh(), &leaves);
+    let (mut surface, ids) = surface_mesh(refiner.mesh(), &leaves);
+    let depth = 2 * u32::from(key.level) + spec.content_depth;
+    // Wide rivers' channels, carved as the level's whole triangulation would carve them.
+    let beds = cell_beds(refiner, cell, depth, super::edge_length(params, key.level));
+    let radius = surface.radius;
+    for (vert, id) in surface.vertices.iter_mut().zip(&ids) {
+        if let Some(&(ground, water)) = beds.get(id) {
+            lay_bed(vert, radius, ground, water);
+        }
+    }
+    let moved: HashMap<u32, DVec3> =
+        beds.iter().map(|(&id, &(ground, _))| (id, lift(refiner.mesh().pos(id), radius, ground))).collect();
     let triangles = surface.triangles();
     let border = border_edges(&triangles);
-    let depth = 2 * u32::from(key.level) + spec.content_depth;
-    let normals = border_normals(refiner, cell, depth, &surface, &triangles, &ids, &border);
+    let normals = border_normals(refiner, (cell, depth), (&surface, &triangles, &ids), &border, &moved);
 
     let levels = water_levels(&surface, &triangles);
     let mut hull: Vec<DVec3> = Vec::with_capacity(surface.vertices.len() + border.len());
@@ -213,33 +225,6 @@ fn river_lines(
 pub(super) fn holds(corners: [DVec3; 3], p: DVec3) -> bool {
     let [a, b, c] = corners;
     a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
-}
-
-/// The leaves as a mesh of their own (vertices in order of first use, faces in leaf order,
-/// edges along the border with one face), enough for normals, colours and the water surface,
-/// and each of its vertices' index in `mesh`.
-fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
-    let mut slot: HashMap<u32, u32> = HashMap::with_capacity(leaves.len());
-    let mut vertices = Vec::new();
-    let mut ids = Vec::new();
-    let triangles: Vec<[u32; 3]> = leaves
-        .iter()
-        .map(|leaf| {
-            leaf.map(|v| {
-                *slot.entry(v).or_insert_with(|| {
-                    vertices.push(mesh.vertices[v as usize]);
-                    ids.push(v);
-                    vertices.len() as u32 - 1
-                })
-            })
-        })
-        .collect();
-    let surface = Mesh {
-        channels: mesh.channels.clone(),
-        precipitation: mesh.precipitation.clone(),
-        ..Mesh::from_triangles(mesh.radius, vertices, &triangles)
-    };
-    (surface, ids)
 }
 
 /// The border of a surface with `triangles` ([`Mesh::triangles`]): directed edges `(a, b)` of

@@ -29,6 +29,7 @@
 //!   `tiles/{key}.glb`.
 
 mod bounds;
+mod carve;
 mod content;
 mod files;
 mod key;
@@ -41,6 +42,7 @@ pub use content::{ContentSpec, TileContent};
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
+pub(crate) use tree::surface_mesh;
 pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::export::glb::Compression;

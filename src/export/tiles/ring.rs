@@ -27,15 +27,14 @@ const ATTEMPTS: usize = 4;
 /// Unit normals of `surface`'s vertices: area-weighted over the surface's faces inside, over the
 /// whole ring of the uniform depth-`depth` triangulation on the border. `triangles` are the
 /// surface's faces ([`Mesh::triangles`]), `ids` its vertices' indices in `refiner`'s mesh;
-/// `cell` is the tile's node; `border` its border edges.
+/// `cell` is the tile's node; `border` its border edges; `moved` the positions of `refiner`'s
+/// vertices that the surface's carving moved (`carve.rs`), its own and its neighbours'.
 pub fn border_normals(
     refiner: &mut Refiner,
-    cell: [u32; 3],
-    depth: u32,
-    surface: &Mesh,
-    triangles: &[[u32; 3]],
-    ids: &[u32],
+    (cell, depth): ([u32; 3], u32),
+    (surface, triangles, ids): (&Mesh, &[[u32; 3]], &[u32]),
     border: &[(u32, u32)],
+    moved: &HashMap<u32, DVec3>,
 ) -> Vec<DVec3> {
     let mut normals = surface_normals(surface, triangles);
     if border.is_empty() {
@@ -74,7 +73,12 @@ pub fn border_normals(
     let mesh = refiner.mesh();
     for (s, &id) in ids.iter().enumerate() {
         if let Some(faces) = ring.get(&id) {
-            let mut areas: Vec<DVec3> = faces.iter().map(|&t| mesh.triangle_area_vector(t)).collect();
+            let pos = |v: u32| moved.get(&v).copied().unwrap_or_else(|| mesh.pos(v));
+            let area = |t: [u32; 3]| {
+                let [a, b, c] = t.map(pos);
+                (b - a).cross(c - a) * 0.5
+            };
+            let mut areas: Vec<DVec3> = faces.iter().map(|&t| area(t)).collect();
             areas.sort_by_key(|n| n.to_array().map(f64::to_bits));
             let n = areas.iter().fold(DVec3::ZERO, |acc, &n| acc + n).normalize_or_zero();
             normals[s] = if n == DVec3::ZERO { mesh.pos(id).normalize_or_zero() } else { n };

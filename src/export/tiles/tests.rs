@@ -532,3 +532,84 @@ fn recycled_buffers_are_the_base_mesh_again() {
     }
     assert_eq!(t.content(key, Compression::None).glb, first, "a content on recycled buffers");
 }
+
+/// The tile of `level` whose cell's centre is nearest `dir` at every level down to it.
+fn tile_at(t: &PlanetTiles, dir: DVec3, level: u8) -> TileKey {
+    let mut refiner = t.refiner();
+    let mut near = |k: TileKey| {
+        let (cell, _) = content::cell_frame(&mut refiner, k);
+        let m = refiner.mesh();
+        let centre = cell.iter().map(|&v| m.pos(v).normalize()).sum::<DVec3>().normalize();
+        centre.distance(dir).to_bits()
+    };
+    let mut key = (0..8).map(TileKey::root).min_by_key(|&k| near(k)).expect("eight roots");
+    while key.level < level {
+        key = key.children().into_iter().min_by_key(|&k| near(k)).expect("four children");
+    }
+    key
+}
+
+#[test]
+fn tiles_carve_wide_rivers_alike_across_their_borders() {
+    use crate::export::water::channel_width;
+    use crate::mesh::VertexFlags;
+    let t = tiles();
+    let base = &t.planet.mesh;
+    // The test planet's widest river, and the first level whose edges are under a sixth of it.
+    let (dir, width) = base
+        .vertices
+        .iter()
+        .filter_map(|v| Some((v.p().normalize(), channel_width(base, v)?)))
+        .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+    let level = (1..=t.max_level()).find(|&l| t.edge_length(l) < width / 6.0).expect("a level finer than it");
+    let edge = t.edge_length(level);
+    // The four tiles of that level around it, and the same level one cell away.
+    let parent = tile_at(t, dir, level - 1);
+    let contents: Vec<TileContent> = parent.children().iter().map(|&k| t.content(k, Compression::None)).collect();
+    let not_carved = VertexFlags::SEA | VertexFlags::COAST | VertexFlags::RIVER | VertexFlags::LAKE;
+    let carved = |v: &crate::mesh::Vertex| v.submerged() && v.flags.0 & not_carved.0 == 0;
+    // Every vertex two tiles share is the same, carved or not, and lit alike.
+    let mut all: Vec<([u64; 3], [u64; 3])> = Vec::new();
+    let mut seen: HashMap<[u64; 3], usize> = HashMap::new();
+    for c in &contents {
+        let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
+        all.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
+        for v in &c.surface.vertices {
+            *seen.entry(v.pos.map(f64::to_bits)).or_default() += usize::from(carved(v));
+        }
+    }
+    let set: HashSet<_> = all.iter().copied().collect();
+    let shared = all.iter().filter(|(a, b)| set.contains(&(*b, *a))).count();
+    let outer = content::border_edges(&t.content(parent, Compression::None).surface.triangles()).len() * 2;
+    assert_eq!(shared + outer, all.len(), "outer border edges: {outer}");
+    let carved_shared = seen.values().filter(|&&n| n > 1).count();
+    assert!(carved_shared > 2, "{carved_shared} carved vertices on shared borders");
+    normals_are_seamless(&contents);
+    // The carved bed lies within the channel's half width of the river, and reaches most of it.
+    let rivers: Vec<(DVec3, f64)> = contents
+        .iter()
+        .flat_map(|c| c.surface.vertices.iter().filter_map(|v| Some((v.p().normalize(), channel_width(base, v)?))))
+        .collect();
+    let r = t.params.radius_m;
+    let (mut farthest, mut beside, mut count) = (0.0f64, 0, 0);
+    for c in &contents {
+        for v in c.surface.vertices.iter().filter(|v| carved(v)) {
+            let d = v.p().normalize();
+            let (gap, w) = rivers.iter().map(|&(p, w)| (p.distance(d) * r, w)).fold((f64::MAX, 0.0), |a, b| {
+                if b.0 < a.0 {
+                    b
+                } else {
+                    a
+                }
+            });
+            // (Rivers just outside the four tiles carve some too.)
+            count += 1;
+            if gap < w / 2.0 + edge {
+                beside += 1;
+                farthest = farthest.max(gap / (w / 2.0));
+            }
+        }
+    }
+    assert!(beside * 10 >= count * 9, "{beside} of {count} carved vertices beside a river in the tiles");
+    assert!(farthest > 0.6, "the bed reaches {farthest} of the half width ({width} m river, {edge} m edges)");
+}

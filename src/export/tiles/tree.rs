@@ -243,3 +243,30 @@ impl<'a> Refiner<'a> {
         }
     }
 }
+
+/// The leaves as a mesh of their own (vertices in order of first use, faces in leaf order,
+/// edges along the border with one face), enough for normals, colours and the water surface,
+/// and each of its vertices' index in `mesh`.
+pub(crate) fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
+    let mut slot: HashMap<u32, u32> = HashMap::with_capacity_and_hasher(leaves.len(), Default::default());
+    let mut vertices = Vec::new();
+    let mut ids = Vec::new();
+    let triangles: Vec<[u32; 3]> = leaves
+        .iter()
+        .map(|leaf| {
+            leaf.map(|v| {
+                *slot.entry(v).or_insert_with(|| {
+                    vertices.push(mesh.vertices[v as usize]);
+                    ids.push(v);
+                    vertices.len() as u32 - 1
+                })
+            })
+        })
+        .collect();
+    let surface = Mesh {
+        channels: mesh.channels.clone(),
+        precipitation: mesh.precipitation.clone(),
+        ..Mesh::from_triangles(mesh.radius, vertices, &triangles)
+    };
+    (surface, ids)
+}

@@ -1,0 +1,80 @@
+//! Rivers' channels carved into a tile's content as into a view (`export/carve.rs`), the same
+//! bits in every tile that holds a vertex.
+//!
+//! A channel carves the vertices within its half width of its river vertex that the
+//! triangulation's edges reach through such vertices, and a channel carves at all only if it is
+//! wider than the shortest edge at its vertex. So a vertex's bed depends on the triangulation
+//! within twice the widest channel's half width of it and one ring of faces beyond. A tile
+//! carves its cell together with the leaves of its level's uniform triangulation out to that
+//! distance and two edges more, and keeps its own vertices' beds: two tiles carve their common
+//! border alike, bit for bit, and every tile carves as the level's whole triangulation would.
+//!
+//! The widest channel near a cell comes from the base mesh's channel widths
+//! ([`crate::mesh::channels::Channels::widest_near`]); where it is no wider than a quarter of the
+//! level's edge (no leaf edge is shorter), nothing is carved and nothing more is refined: every
+//! coarse level, and fine ones away from great rivers.
+
+use super::tree::{surface_mesh, Refiner, ROOTS};
+use crate::export::carve::channel_beds;
+use crate::export::water::SMALL_STREAM_M;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// Least share of its level's nominal edge a leaf's edge has.
+const SHORTEST_EDGE_SHARE: f64 = 0.25;
+/// How far past its triangle a node's descendants may reach, in the node's radii (split
+/// positions wander inside their diamond, eq. 2 and 7; as `ring.rs`).
+const SLACK: f64 = 1.0;
+
+/// The carved `(ground, water)` of the vertices (ids in `refiner`'s mesh) of tree node `cell`'s
+/// leaves `depth` bisections below the octahedron (and of some around them), whose nominal
+/// edge is `edge_m`; empty where no channel near the cell is wide enough to carve.
+pub fn cell_beds(refiner: &mut Refiner, cell: [u32; 3], depth: u32, edge_m: f64) -> HashMap<u32, (f64, f64)> {
+    let mesh = refiner.mesh();
+    let Some(channels) = mesh.channels.clone() else { return HashMap::new() };
+    let radius = mesh.radius;
+    let (centre, cell_r) = disc(cell.map(|v| mesh.pos(v).normalize()));
+    let cell_r = cell_r * (1.0 + SLACK);
+    // Sources near the cell are at most this wide: those within the widest channel's width
+    // (and two edges) of it.
+    let near = cell_r + (f64::from(channels.widest()) + 2.0 * edge_m) / radius;
+    let half = 0.5 * f64::from(channels.widest_near(centre, near).max(SMALL_STREAM_M));
+    if half <= SHORTEST_EDGE_SHARE * edge_m {
+        return HashMap::new();
+    }
+    let reach = cell_r + (2.0 * half + 2.0 * edge_m) / radius;
+    let mut leaves = Vec::new();
+    for root in ROOTS {
+        gather(refiner, root, depth, (centre, reach), &mut leaves);
+    }
+    let (around, ids) = surface_mesh(refiner.mesh(), &leaves);
+    let triangles = around.triangles();
+    channel_beds(&around, &triangles).into_iter().map(|(v, ground, water)| (ids[v as usize], (ground, water))).collect()
+}
+
+/// Centre and angular radius of the spherical triangle of unit `corners`.
+fn disc(corners: [DVec3; 3]) -> (DVec3, f64) {
+    let centre = (corners[0] + corners[1] + corners[2]).normalize();
+    (centre, corners.iter().map(|&d| angle(centre, d)).fold(0.0, f64::max))
+}
+
+/// Collects into `out` the leaves `left` bisections below `node` that may lie within angle
+/// `reach` of unit direction `centre`.
+fn gather(refiner: &mut Refiner, node: [u32; 3], left: u32, (centre, reach): (DVec3, f64), out: &mut Vec<[u32; 3]>) {
+    let (c, r) = disc(node.map(|v| refiner.mesh().pos(v).normalize()));
+    if angle(c, centre) > reach + r * (1.0 + SLACK) {
+        return;
+    }
+    if left == 0 {
+        out.push(node);
+        return;
+    }
+    for child in refiner.children(node) {
+        gather(refiner, child, left - 1, (centre, reach), out);
+    }
+}
+
+/// Angle between two unit vectors, accurate for tiny angles.
+fn angle(a: DVec3, b: DVec3) -> f64 {
+    a.cross(b).length().atan2(a.dot(b))
+}
