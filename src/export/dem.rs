@@ -23,7 +23,7 @@
 
 use super::carve::channel_beds;
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{surface_mesh, PlanetTiles, Refiner, ROOTS};
+use super::tiles::{leaf_vertices, PlanetTiles, Refiner, ROOTS};
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
@@ -379,8 +379,7 @@ impl<'a> Surface<'a> {
             .collect();
         let mut beds = HashMap::default();
         if margin.is_some() {
-            let (around, ids) = surface_mesh(mesh, &leaves);
-            let triangles = around.triangles();
+            let (around, triangles, ids) = leaf_vertices(mesh, &leaves);
             beds = channel_beds(&around, &triangles).into_iter().map(|(v, g, w)| (ids[v as usize], (g, w))).collect();
             let inside = Region::new(rect);
             leaves.retain(|c| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())));

@@ -14,7 +14,7 @@
 //! level's edge (no leaf edge is shorter), nothing is carved and nothing more is refined: every
 //! coarse level, and fine ones away from great rivers.
 
-use super::tree::{surface_mesh, Refiner, ROOTS};
+use super::tree::{leaf_vertices, Refiner, ROOTS};
 use crate::export::carve::channel_beds;
 use crate::export::water::SMALL_STREAM_M;
 use glam::DVec3;
@@ -47,8 +47,7 @@ pub fn cell_beds(refiner: &mut Refiner, cell: [u32; 3], depth: u32, edge_m: f64)
     for root in ROOTS {
         gather(refiner, root, depth, (centre, reach), &mut leaves);
     }
-    let (around, ids) = surface_mesh(refiner.mesh(), &leaves);
-    let triangles = around.triangles();
+    let (around, triangles, ids) = leaf_vertices(refiner.mesh(), &leaves);
     channel_beds(&around, &triangles).into_iter().map(|(v, ground, water)| (ids[v as usize], (ground, water))).collect()
 }
 

@@ -42,7 +42,7 @@ pub use content::{ContentSpec, TileContent};
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
-pub(crate) use tree::surface_mesh;
+pub(crate) use tree::leaf_vertices;
 pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::export::glb::Compression;

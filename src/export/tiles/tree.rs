@@ -248,6 +248,15 @@ impl<'a> Refiner<'a> {
 /// edges along the border with one face), enough for normals, colours and the water surface,
 /// and each of its vertices' index in `mesh`.
 pub(crate) fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>) {
+    let (points, triangles, ids) = leaf_vertices(mesh, leaves);
+    let surface = Mesh::from_triangles(mesh.radius, points.vertices, &triangles);
+    (Mesh { channels: points.channels, precipitation: points.precipitation, ..surface }, ids)
+}
+
+/// The leaves' vertices (in order of first use) as a mesh without faces or edges, the leaves
+/// as triangles over them, and each vertex's index in `mesh`: enough to carve channels
+/// (`export/carve.rs`) without the cost of a mesh's edges.
+pub(crate) fn leaf_vertices(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<[u32; 3]>, Vec<u32>) {
     let mut slot: HashMap<u32, u32> = HashMap::with_capacity_and_hasher(leaves.len(), Default::default());
     let mut vertices = Vec::new();
     let mut ids = Vec::new();
@@ -263,10 +272,12 @@ pub(crate) fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>)
             })
         })
         .collect();
-    let surface = Mesh {
+    let points = Mesh {
+        radius: mesh.radius,
+        vertices,
         channels: mesh.channels.clone(),
         precipitation: mesh.precipitation.clone(),
-        ..Mesh::from_triangles(mesh.radius, vertices, &triangles)
+        ..Mesh::default()
     };
-    (surface, ids)
+    (points, triangles, ids)
 }
