@@ -14,7 +14,7 @@
 //! level's edge (no leaf edge is shorter), nothing is carved and nothing more is refined: every
 //! coarse level, and fine ones away from great rivers.
 
-use super::tree::{leaf_vertices, Refiner, ROOTS};
+use super::tree::{holds, leaf_vertices, Refiner, ROOTS};
 use crate::export::carve::channel_beds;
 use crate::export::water::SMALL_STREAM_M;
 use glam::DVec3;
@@ -27,28 +27,36 @@ const SHORTEST_EDGE_SHARE: f64 = 0.25;
 const SLACK: f64 = 1.0;
 
 /// The carved `(ground, water)` of the vertices (ids in `refiner`'s mesh) of tree node `cell`'s
-/// leaves `depth` bisections below the octahedron (and of some around them), whose nominal
+/// `leaves`, `depth` bisections below the octahedron (and of some around them), whose nominal
 /// edge is `edge_m`; empty where no channel near the cell is wide enough to carve.
-pub fn cell_beds(refiner: &mut Refiner, cell: [u32; 3], depth: u32, edge_m: f64) -> HashMap<u32, (f64, f64)> {
+pub fn cell_beds(
+    refiner: &mut Refiner,
+    cell: [u32; 3],
+    leaves: &[[u32; 3]],
+    depth: u32,
+    edge_m: f64,
+) -> HashMap<u32, (f64, f64)> {
     let mesh = refiner.mesh();
     let Some(channels) = mesh.channels.clone() else { return HashMap::new() };
     let radius = mesh.radius;
-    let (centre, cell_r) = disc(cell.map(|v| mesh.pos(v).normalize()));
-    let cell_r = cell_r * (1.0 + SLACK);
+    let corners = cell.map(|v| mesh.pos(v).normalize());
+    let (centre, cell_r) = disc(corners);
+    // How far the cell's leaves wander outside its triangle (eq. 2 and 7).
+    let wander = leaves.iter().flatten().map(|&v| outside(mesh.pos(v).normalize(), corners)).fold(0.0, f64::max);
     // Sources near the cell are at most this wide: those within the widest channel's width
     // (and two edges) of it.
-    let near = cell_r + (f64::from(channels.widest()) + 2.0 * edge_m) / radius;
+    let near = cell_r + wander + (f64::from(channels.widest()) + 2.0 * edge_m) / radius;
     let half = 0.5 * f64::from(channels.widest_near(centre, near).max(SMALL_STREAM_M));
     if half <= SHORTEST_EDGE_SHARE * edge_m {
         return HashMap::new();
     }
-    let reach = cell_r + (2.0 * half + 2.0 * edge_m) / radius;
-    let mut leaves = Vec::new();
+    let reach = wander + (2.0 * half + 2.0 * edge_m) / radius;
+    let mut around = Vec::new();
     for root in ROOTS {
-        gather(refiner, root, depth, (centre, reach), &mut leaves);
+        gather(refiner, root, depth, (corners, reach), &mut around);
     }
-    let (around, triangles, ids) = leaf_vertices(refiner.mesh(), &leaves);
-    channel_beds(&around, &triangles).into_iter().map(|(v, ground, water)| (ids[v as usize], (ground, water))).collect()
+    let (points, triangles, ids) = leaf_vertices(refiner.mesh(), &around);
+    channel_beds(&points, &triangles).into_iter().map(|(v, ground, water)| (ids[v as usize], (ground, water))).collect()
 }
 
 /// Centre and angular radius of the spherical triangle of unit `corners`.
@@ -57,11 +65,39 @@ fn disc(corners: [DVec3; 3]) -> (DVec3, f64) {
     (centre, corners.iter().map(|&d| angle(centre, d)).fold(0.0, f64::max))
 }
 
+/// Angle from unit direction `p` to the spherical triangle of unit `corners` (counter-clockwise
+/// seen from outside): 0 inside, else to its nearest side.
+fn outside(p: DVec3, corners: [DVec3; 3]) -> f64 {
+    if holds(corners, p) {
+        return 0.0;
+    }
+    (0..3)
+        .map(|k| {
+            let (a, b) = (corners[k], corners[(k + 1) % 3]);
+            let n = a.cross(b).normalize();
+            let q = p - n * p.dot(n);
+            if a.cross(q).dot(n) >= 0.0 && q.cross(b).dot(n) >= 0.0 {
+                p.dot(n).abs().clamp(0.0, 1.0).asin()
+            } else {
+                angle(p, a).min(angle(p, b))
+            }
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
 /// Collects into `out` the leaves `left` bisections below `node` that may lie within angle
-/// `reach` of unit direction `centre`.
-fn gather(refiner: &mut Refiner, node: [u32; 3], left: u32, (centre, reach): (DVec3, f64), out: &mut Vec<[u32; 3]>) {
+/// `reach` of the spherical triangle of unit `corners`.
+fn gather(
+    refiner: &mut Refiner,
+    node: [u32; 3],
+    left: u32,
+    (corners, reach): ([DVec3; 3], f64),
+    out: &mut Vec<[u32; 3]>,
+) {
     let (c, r) = disc(node.map(|v| refiner.mesh().pos(v).normalize()));
-    if angle(c, centre) > reach + r * (1.0 + SLACK) {
+    // A leaf's vertices are its corners; an inner node's descendants wander past it.
+    let r = if left == 0 { r } else { r * (1.0 + SLACK) };
+    if outside(c, corners) > reach + r {
         return;
     }
     if left == 0 {
@@ -69,7 +105,7 @@ fn gather(refiner: &mut Refiner, node: [u32; 3], left: u32, (centre, reach): (DV
         return;
     }
     for child in refiner.children(node) {
-        gather(refiner, child, left - 1, (centre, reach), out);
+        gather(refiner, child, left - 1, (corners, reach), out);
     }
 }
 

@@ -12,7 +12,7 @@ use super::bounds::{local_axes, OrientedBox};
 use super::carve::cell_beds;
 use super::key::TileKey;
 use super::ring::border_normals;
-use super::tree::{surface_mesh, Refiner, ROOTS};
+use super::tree::{holds, surface_mesh, Refiner, ROOTS};
 use crate::export::carve::lay_bed;
 use crate::export::colour_mip::ColourMip;
 use crate::export::glb::{encode_glb, terrain_mesh_with_normals, to_gltf_axes, Compression, GlbMesh};
@@ -90,7 +90,7 @@ pub fn tile_content(
     let (mut surface, ids) = surface_mesh(refiner.mesh(), &leaves);
     let depth = 2 * u32::from(key.level) + spec.content_depth;
     // Wide rivers' channels, carved as the level's whole triangulation would carve them.
-    let beds = cell_beds(refiner, cell, depth, super::edge_length(params, key.level));
+    let beds = cell_beds(refiner, cell, &leaves, depth, super::edge_length(params, key.level));
     let radius = surface.radius;
     for (vert, id) in surface.vertices.iter_mut().zip(&ids) {
         if let Some(&(ground, water)) = beds.get(id) {
@@ -218,13 +218,6 @@ fn river_lines(
         }
     }
     out
-}
-
-/// Whether the spherical triangle of unit `corners` (counter-clockwise seen from outside) holds
-/// unit direction `p`, its sides included.
-pub(super) fn holds(corners: [DVec3; 3], p: DVec3) -> bool {
-    let [a, b, c] = corners;
-    a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
 }
 
 /// The border of a surface with `triangles` ([`Mesh::triangles`]): directed edges `(a, b)` of

@@ -458,7 +458,7 @@ fn tiles_carry_their_rivers_as_lines_on_their_surface() {
         .find(|&r| {
             let mut refiner = tiles.refiner();
             let (cell, _) = content::cell_frame(&mut refiner, TileKey::root(r));
-            content::holds(cell.map(|v| refiner.mesh().pos(v).normalize()), amazon)
+            tree::holds(cell.map(|v| refiner.mesh().pos(v).normalize()), amazon)
         })
         .unwrap();
     let content = tiles.content(TileKey::root(root), Compression::None);
@@ -563,7 +563,7 @@ fn tiles_carve_wide_rivers_alike_across_their_borders() {
         .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
     let level = (1..=t.max_level()).find(|&l| t.edge_length(l) < width / 6.0).expect("a level finer than it");
     let edge = t.edge_length(level);
-    // The four tiles of that level around it, and the same level one cell away.
+    // The four tiles of that level around it.
     let parent = tile_at(t, dir, level - 1);
     let contents: Vec<TileContent> = parent.children().iter().map(|&k| t.content(k, Compression::None)).collect();
     let not_carved = VertexFlags::SEA | VertexFlags::COAST | VertexFlags::RIVER | VertexFlags::LAKE;

@@ -281,3 +281,10 @@ pub(crate) fn leaf_vertices(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<[u32
     };
     (points, triangles, ids)
 }
+
+/// Whether the spherical triangle of unit `corners` (counter-clockwise seen from outside) holds
+/// unit direction `p`, its sides included.
+pub(super) fn holds(corners: [glam::DVec3; 3], p: glam::DVec3) -> bool {
+    let [a, b, c] = corners;
+    a.cross(b).dot(p) >= 0.0 && b.cross(c).dot(p) >= 0.0 && c.cross(a).dot(p) >= 0.0
+}
