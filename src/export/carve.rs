@@ -20,7 +20,8 @@
 //! A function of the mesh near each vertex alone, without vertex ids: the same bits whichever
 //! backend adapted the mesh, and the same for a part of a triangulation given a margin around
 //! it. Views and renders carve the adapted mesh, 3D Tiles their cell with its surroundings
-//! (`tiles/carve.rs`); elevation rasters keep the split rule's ground.
+//! (`tiles/carve.rs`), DEMs and elevation tiles their refined surface past its rectangle
+//! (`dem.rs`).
 
 use super::water::{channel_halves, river_level, shows_channel};
 use crate::mesh::split::position::lift;

@@ -20,6 +20,11 @@
 //! under the sea: the raster has no hole there); 2 `water_m`, the water surface where water
 //! stands (sea, lakes, rivers wide enough for the grid's triangles) and NaN, the file's no-data
 //! value, where the ground is dry.
+//!
+//! **Channels.** Where a river near the bbox is wider than a quarter of the finest leaves'
+//! edge, the surface is refined past the bbox by twice its channel's width and carved as views
+//! carve (`carve.rs`); cells sample the carved ground and water. The carving of a vertex
+//! depends on the mesh within that margin only, so blocks and neighbouring tiles agree.
 
 use super::carve::channel_beds;
 use super::cog::{write_cog, CogRaster};
