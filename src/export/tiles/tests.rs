@@ -585,6 +585,13 @@ fn tiles_carve_wide_rivers_alike_across_their_borders() {
     let carved_shared = seen.values().filter(|&&n| n > 1).count();
     assert!(carved_shared > 2, "{carved_shared} carved vertices on shared borders");
     normals_are_seamless(&contents);
+    // The tiles' water surface covers every carved vertex.
+    for c in &contents {
+        let levels = crate::export::water::water_levels(&c.surface, &c.surface.triangles());
+        for (v, level) in c.surface.vertices.iter().zip(levels) {
+            assert!(!carved(v) || level > v.ground, "a carved vertex under no water");
+        }
+    }
     // The carved bed lies within the channel's half width of the river, and reaches most of it.
     let rivers: Vec<(DVec3, f64)> = contents
         .iter()
