@@ -21,12 +21,13 @@
 //! stands (sea, lakes, rivers wide enough for the grid's triangles) and NaN, the file's no-data
 //! value, where the ground is dry.
 //!
-//! **Channels.** Where a river near the bbox is wider than a quarter of the finest leaves'
-//! edge, the surface is refined past the bbox by twice its channel's width and carved as views
-//! carve (`carve.rs`); cells sample the carved ground and water. The carving of a vertex
-//! depends on the mesh within that margin only, so blocks and neighbouring tiles agree.
+//! **Channels.** A channel whose half width spans one to [`MAX_CARVE_EDGES`] of the surface's
+//! target edges at its latitude carves as views carve (`carve.rs`). Where such a channel may
+//! lie near the bbox, the surface is refined past it by twice that half width and a few leaves
+//! and carved; cells sample the carved ground and water. The carving of a vertex depends on the
+//! mesh within that margin only, so blocks and neighbouring tiles agree.
 
-use super::carve::channel_beds;
+use super::carve::{channel_beds, MAX_CARVE_EDGES};
 use super::cog::{write_cog, CogRaster};
 use super::tiles::{leaf_vertices, PlanetTiles, Refiner, ROOTS};
 use crate::geo::lat_lon;
@@ -385,7 +386,14 @@ impl<'a> Surface<'a> {
         let mut beds = HashMap::default();
         if margin.is_some() {
             let (around, triangles, ids) = leaf_vertices(mesh, &leaves);
-            beds = channel_beds(&around, &triangles).into_iter().map(|(v, g, w)| (ids[v as usize], (g, w))).collect();
+            let limits = |dir: DVec3| {
+                let t = leaf_target(params, cell, rows, lat_lon(dir).0);
+                (t, MAX_CARVE_EDGES * t)
+            };
+            beds = channel_beds(&around, &triangles, Some(&limits))
+                .into_iter()
+                .map(|(v, g, w)| (ids[v as usize], (g, w)))
+                .collect();
             let inside = Region::new(rect);
             leaves.retain(|c| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())));
         }
@@ -564,9 +572,9 @@ impl Drop for Surface<'_> {
 
 /// How far (m) past `rect` a surface refined for cells of `cell` degrees must be refined and
 /// carved so that its cells' carving does not depend on where the refinement stops: twice the
-/// widest channel that may reach it ([`crate::export::carve`]) and two of the coarsest leaves.
-/// `None` where no channel near it is wider than a quarter of the finest leaves' edge (none is
-/// shorter): nothing can be carved there.
+/// half width of the widest channel that may carve it ([`crate::export::carve`]) and four of
+/// the coarsest leaves. `None` where no channel near it has a half width over the finest
+/// target edge: nothing can be carved there.
 fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Option<f64> {
     let params = tiles.params();
     let r = params.radius_m;
@@ -576,15 +584,10 @@ fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: 
     let (s, n) = (rect.south.clamp(-90.0, 90.0), rect.north.clamp(-90.0, 90.0));
     let polar = s.abs().max(n.abs());
     let equatorial = if s <= 0.0 && n >= 0.0 { 0.0 } else { s.abs().min(n.abs()) };
-    let target = |lat: f64| {
-        let ew = dx.to_radians() * r * lat.min(90.0).to_radians().cos();
-        let ns = match rows {
-            Rows::Degrees => dy.to_radians() * r,
-            Rows::Mercator => ew,
-        };
-        ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m)
-    };
+    let target = |lat: f64| leaf_target(params, [dx, dy], rows, lat);
     let (finest, coarsest) = (target(polar + 1.0), target(equatorial));
+    // A channel carves where its half width is between the target at its vertex's latitude
+    // and MAX_CARVE_EDGES of it (`Surface::refine`).
     let centre = crate::geo::direction(0.5 * (s + n), 0.5 * (rect.west + rect.east));
     let angle = |d: DVec3| centre.cross(d).length().atan2(centre.dot(d));
     let spread = [s, 0.5 * (s + n), n]
@@ -594,8 +597,21 @@ fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: 
         .fold(0.0, f64::max);
     let spread = if rect.east - rect.west >= 180.0 { std::f64::consts::PI } else { spread * 1.1 };
     let near = spread + (f64::from(channels.widest()) + 2.0 * LEAF_EDGE_CELLS * coarsest) / r;
-    let half = 0.5 * f64::from(channels.widest_near(centre, near));
-    (half > 0.25 * finest).then_some(2.0 * half + 2.0 * LEAF_EDGE_CELLS * coarsest)
+    let half = 0.5 * f64::from(channels.widest_near(centre, near).max(crate::export::water::SMALL_STREAM_M));
+    (half > finest).then_some(2.0 * half.min(MAX_CARVE_EDGES * coarsest) + 4.0 * LEAF_EDGE_CELLS * coarsest)
+}
+
+/// The edge (m) a surface refined for cells of `cell` degrees whose rows divide latitudes as
+/// `rows` does aims at (`Surface::refine`) at latitude `lat`, and the least half width of a
+/// channel that carves there.
+fn leaf_target(params: &crate::params::Params, [dx, dy]: [f64; 2], rows: Rows, lat: f64) -> f64 {
+    let r = params.radius_m;
+    let ew = dx.to_radians() * r * lat.abs().min(90.0).to_radians().cos();
+    let ns = match rows {
+        Rows::Degrees => dy.to_radians() * r,
+        Rows::Mercator => ew,
+    };
+    ew.min(ns).max(0.25 * ew.max(ns)).max(params.min_edge_length_m)
 }
 
 /// `rect` grown by `angle` radians on every side (to every longitude near a pole).

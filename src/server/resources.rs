@@ -229,8 +229,10 @@ fn render(
 /// means of the fine surface; 14: rivers as lines in view.glb; 15: and in 3D Tiles; 16:
 /// elevation tiles resampled from samples every 4 pixels; 17: compressed glTF's `f32`
 /// positions and normals through meshopt's filters, elevation tiles' PNG rows Paeth-filtered,
-/// steep land bare rock; 18: elevation tiles from cells of 6 pixels; 19: the climate's monsoon reach and wet land's
-/// gain), so that caches holding the old bytes under a strong, immutable `ETag` see a new one.
+/// steep land bare rock; 18: elevation tiles from cells of 6 pixels; 19: the climate's monsoon
+/// reach and wet land's gain; 20: wide rivers' channels carved into views; 21: and into 3D
+/// Tiles and DEMs), so that caches holding the old bytes under a strong, immutable `ETag` see
+/// a new one.
 pub const ANSWERS_REVISION: &str = "21";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and

@@ -3,28 +3,31 @@
 //!
 //! A channel carves the vertices within its half width of its river vertex that the
 //! triangulation's edges reach through such vertices, and a channel carves at all only if it is
-//! wider than the shortest edge at its vertex. So a vertex's bed depends on the triangulation
-//! within twice the widest channel's half width of it and one ring of faces beyond. A tile
+//! wide enough for the level. So a vertex's bed depends on the triangulation within twice the
+//! widest channel's half width of it and one ring of faces beyond. A tile
 //! carves its cell together with the leaves of its level's uniform triangulation out to that
 //! distance and two edges more, and keeps its own vertices' beds: two tiles carve their common
 //! border alike, bit for bit, and every tile carves as the level's whole triangulation would.
 //!
 //! The widest channel near a cell comes from the base mesh's channel widths
-//! ([`crate::mesh::channels::Channels::widest_near`]); where it is no wider than a quarter of the
-//! level's edge (no leaf edge is shorter), nothing is carved and nothing more is refined: every
-//! coarse level, and fine ones away from great rivers.
+//! ([`crate::mesh::channels::Channels::widest_near`]). A channel carves a tile where its half
+//! width is between half the level's nominal edge and [`MAX_CARVE_EDGES`] of them, a rule of
+//! the level alone: where no channel near the cell is that wide, nothing is carved and nothing
+//! more is refined (every coarse level, and fine ones away from great rivers), and the leaves a
+//! tile refines stay bounded.
 
 use super::tree::{holds, leaf_vertices, Refiner, ROOTS};
-use crate::export::carve::channel_beds;
+use crate::export::carve::{channel_beds, MAX_CARVE_EDGES};
 use crate::export::water::SMALL_STREAM_M;
+use crate::mesh::split::position::DESCENDANT_REACH;
 use glam::DVec3;
 use std::collections::HashMap;
 
-/// Least share of its level's nominal edge a leaf's edge has.
-const SHORTEST_EDGE_SHARE: f64 = 0.25;
-/// How far past its triangle a node's descendants may reach, in the node's radii (split
-/// positions wander inside their diamond, eq. 2 and 7; as `ring.rs`).
-const SLACK: f64 = 1.0;
+/// Least half width of a channel that carves a tile, in its level's nominal edges.
+const LEAST_HALF_EDGES: f64 = 0.5;
+/// Most share of its level's nominal edge a leaf's edge has (measured under 4.2, split
+/// positions wandering inside their diamonds: `tiles_carve_wide_rivers_alike_across_their_borders`).
+pub(super) const LONGEST_EDGE_SHARE: f64 = 6.0;
 
 /// The carved `(ground, water)` of the vertices (ids in `refiner`'s mesh) of tree node `cell`'s
 /// `leaves`, `depth` bisections below the octahedron (and of some around them), whose nominal
@@ -47,16 +50,20 @@ pub fn cell_beds(
     // (and two edges) of it.
     let near = cell_r + wander + (f64::from(channels.widest()) + 2.0 * edge_m) / radius;
     let half = 0.5 * f64::from(channels.widest_near(centre, near).max(SMALL_STREAM_M));
-    if half <= SHORTEST_EDGE_SHARE * edge_m {
+    let limits = (LEAST_HALF_EDGES * edge_m, MAX_CARVE_EDGES * edge_m);
+    if half <= limits.0 {
         return HashMap::new();
     }
-    let reach = wander + (2.0 * half + 2.0 * edge_m) / radius;
+    let reach = wander + (2.0 * half.min(limits.1) + LONGEST_EDGE_SHARE * edge_m) / radius;
     let mut around = Vec::new();
     for root in ROOTS {
         gather(refiner, root, depth, (corners, reach), &mut around);
     }
     let (points, triangles, ids) = leaf_vertices(refiner.mesh(), &around);
-    channel_beds(&points, &triangles).into_iter().map(|(v, ground, water)| (ids[v as usize], (ground, water))).collect()
+    channel_beds(&points, &triangles, Some(&|_| limits))
+        .into_iter()
+        .map(|(v, ground, water)| (ids[v as usize], (ground, water)))
+        .collect()
 }
 
 /// Centre and angular radius of the spherical triangle of unit `corners`.
@@ -94,9 +101,12 @@ fn gather(
     (corners, reach): ([DVec3; 3], f64),
     out: &mut Vec<[u32; 3]>,
 ) {
-    let (c, r) = disc(node.map(|v| refiner.mesh().pos(v).normalize()));
-    // A leaf's vertices are its corners; an inner node's descendants wander past it.
-    let r = if left == 0 { r } else { r * (1.0 + SLACK) };
+    let u = node.map(|v| refiner.mesh().pos(v).normalize());
+    let (c, r) = disc(u);
+    // A leaf's vertices are its corners; an inner node's descendants lie within
+    // DESCENDANT_REACH of its longest edge past it (eq. 2 and 7).
+    let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+    let r = if left == 0 { r } else { r + DESCENDANT_REACH * longest };
     if outside(c, corners) > reach + r {
         return;
     }
