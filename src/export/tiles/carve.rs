@@ -16,6 +16,7 @@
 //! more is refined (every coarse level, and fine ones away from great rivers), and the leaves a
 //! tile refines stay bounded.
 
+use super::ring::angle;
 use super::tree::{holds, leaf_vertices, Refiner, ROOTS};
 use crate::export::carve::{channel_beds, MAX_CARVE_EDGES};
 use crate::export::water::SMALL_STREAM_M;
@@ -117,9 +118,4 @@ fn gather(
     for child in refiner.children(node) {
         gather(refiner, child, left - 1, (corners, reach), out);
     }
-}
-
-/// Angle between two unit vectors, accurate for tiny angles.
-fn angle(a: DVec3, b: DVec3) -> f64 {
-    a.cross(b).length().atan2(a.dot(b))
 }

@@ -121,7 +121,7 @@ fn descend(
 }
 
 /// Angle between two unit vectors, accurate for tiny angles.
-fn angle(a: DVec3, b: DVec3) -> f64 {
+pub(super) fn angle(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
 }
 
