@@ -19,9 +19,12 @@
 //!
 //! A function of the mesh near each vertex alone, without vertex ids: the same bits whichever
 //! backend adapted the mesh, and the same for a part of a triangulation given a margin around
-//! it. Views and renders carve the adapted mesh, 3D Tiles their cell with its surroundings
-//! (`tiles/carve.rs`), DEMs and elevation tiles their refined surface past its rectangle
-//! (`dem.rs`).
+//! it (twice the widest flooding channel's half width and a ring of faces). Views and renders
+//! carve the adapted mesh, 3D Tiles their cell with its surroundings (`tiles/carve.rs`), DEMs
+//! and elevation tiles their refined surface past its rectangle (`dem.rs`). Tiles and DEMs far
+//! finer than a channel (its half width over [`MAX_CARVE_EDGES`] of their edges) do not flood
+//! it: the vertices of its course (`tiles/course.rs`) reach every vertex within their half
+//! width, by the same rule.
 
 use super::water::{channel_halves, river_level, shows_channel};
 use crate::mesh::split::position::lift;
@@ -32,7 +35,7 @@ use std::borrow::Cow;
 /// `mesh` with its wide rivers' channels carved (see the module's doc); `triangles` are its
 /// faces ([`Mesh::triangles`]). Borrowed when nothing is carved.
 pub fn carved<'a>(mesh: &'a Mesh, triangles: &[[u32; 3]]) -> Cow<'a, Mesh> {
-    let beds = channel_beds(mesh, triangles, None);
+    let beds = channel_beds(mesh, triangles, None, &[]);
     if beds.is_empty() {
         return Cow::Borrowed(mesh);
     }
@@ -51,17 +54,39 @@ pub fn lay_bed(vert: &mut Vertex, radius: f64, ground: f64, water: f64) {
     vert.water = water;
 }
 
-/// Most nominal edges a channel's half width spans for tiles and DEMs to carve it: their
-/// carving refines the leaves within twice the half width of their region at their own
-/// resolution, so without a bound a tile or DEM finer than a great river by thousands would
-/// refine millions of leaves. Finer ones show the split rule's ground (3D Tiles: down to level
-/// 13 for the Amazon's 1.3 km channel, 17 for a 100 m river).
-pub const MAX_CARVE_EDGES: f64 = 32.0;
+/// Most nominal edges a channel's half width spans for tiles and DEMs to carve it by flooding
+/// their own triangulation: that refines the leaves within twice the half width of their region
+/// at their own resolution, so without a bound a tile or DEM finer than a great river by
+/// thousands would refine millions of leaves. Wider channels carve by their course
+/// (`tiles/course.rs`; 3D Tiles: past level 11 for the Amazon's 1.3 km channel, 15 for a 100 m
+/// river). At 8, a tile beside a great river refines at most about six times its own leaves
+/// (at 32, 60 times: 73-113 ms a tile at the bound).
+pub const MAX_CARVE_EDGES: f64 = 8.0;
 
 /// Depth (m) of a channel `half` metres wide on each side of its centre line.
 fn centre_depth(half: f64) -> f64 {
     use crate::planet::network::{channel_depth_m, discharge_of_width};
     channel_depth_m(discharge_of_width(2.0 * half))
+}
+
+/// A river vertex of a course too wide for the mesh's own carving (`tiles/course.rs`): its
+/// channel carves the vertices within its half width by their distance alone.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CourseVertex {
+    /// Unit direction.
+    pub dir: DVec3,
+    /// Half the channel's width (m).
+    pub half: f64,
+    /// Its water level (m above the base sphere, [`river_level`]).
+    pub level: f64,
+    /// Its position's bits (the last tie-break).
+    pub bits: [u64; 3],
+}
+
+impl CourseVertex {
+    pub fn new(v: &Vertex, half: f64) -> CourseVertex {
+        CourseVertex { dir: v.p().normalize(), half, level: river_level(v), bits: v.pos.map(f64::to_bits) }
+    }
 }
 
 /// The carved vertices: `(vertex, ground, water)`, in vertex order.
@@ -71,17 +96,20 @@ fn centre_depth(half: f64) -> f64 {
 /// others within that width; a vertex takes the channel whose margin (half width minus
 /// distance) is largest, ties going to the lower water level and then to the river vertex
 /// whose position's bits sort first. Nothing here depends on vertex ids or on the mesh
-/// beyond twice the widest channel's half width and one ring of faces, so a part of a
+/// beyond twice the widest flooding channel's half width and one ring of faces, so a part of a
 /// triangulation with that margin around it carves its inside exactly as the whole would
 /// (3D Tiles, `tiles/carve.rs`). With `limits`, a channel carves only where its half width
 /// lies between the two it gives for its river vertex's unit direction (tiles and DEMs: from
 /// their nominal edge there, so that whether a tile carves at all is known before it is
 /// refined, and [`MAX_CARVE_EDGES`] of it at most); without, wherever it is wider than the
-/// shortest edge at its vertex (views, whose size their budget bounds).
+/// shortest edge at its vertex (views, whose size their budget bounds). The `course` vertices
+/// of channels wider than that (`tiles/course.rs`) reach every vertex within their half width,
+/// by the same rule, and keep their own bed as a flooding channel's vertex does.
 pub fn channel_beds(
     mesh: &Mesh,
     triangles: &[[u32; 3]],
     limits: Option<&dyn Fn(DVec3) -> (f64, f64)>,
+    course: &[CourseVertex],
 ) -> Vec<(u32, f64, f64)> {
     let (half, shortest) = channel_halves(mesh, triangles);
     let vs = &mesh.vertices;
@@ -92,25 +120,27 @@ pub fn channel_beds(
             (shows_channel(h, e) && h > lo && h <= hi).then_some((v as u32, h))
         })
         .collect();
-    if sources.is_empty() {
+    if sources.is_empty() && course.is_empty() {
         return Vec::new();
     }
+    // Every channel: the flooding sources', then the course's.
+    let channels: Vec<CourseVertex> =
+        sources.iter().map(|&(s, h)| CourseVertex::new(&vs[s as usize], h)).chain(course.iter().copied()).collect();
     let around = Neighbours::new(vs.len(), triangles);
     let unit = |v: u32| vs[v as usize].p().normalize();
     // The order channels win a vertex in: larger margin, lower level, position bits.
-    let rank = |k: usize| (river_level(&vs[sources[k].0 as usize]), vs[sources[k].0 as usize].pos.map(f64::to_bits));
     let beats = |m: f64, k: usize, (bm, bk): (f64, usize)| {
         m > bm
             || (m == bm && {
-                let ((la, pa), (lb, pb)) = (rank(k), rank(bk));
-                la.total_cmp(&lb).then(pa.cmp(&pb)).is_lt()
+                let (a, b) = (&channels[k], &channels[bk]);
+                a.level.total_cmp(&b.level).then(a.bits.cmp(&b.bits)).is_lt()
             })
     };
     let mut best: Vec<(f64, usize)> = vec![(f64::NEG_INFINITY, usize::MAX); vs.len()];
     let mut seen = vec![usize::MAX; vs.len()];
     let mut stack = Vec::new();
     for (k, &(s, h)) in sources.iter().enumerate() {
-        let centre = unit(s);
+        let centre = channels[k].dir;
         let margin = |v: u32| h - unit(v).distance(centre) * mesh.radius;
         seen[s as usize] = k;
         stack.push((s, h));
@@ -129,14 +159,47 @@ pub fn channel_beds(
             }
         }
     }
+    // The course's channels, by distance: in runs of consecutive vertices (near each other
+    // along a course), each passed over where the vertex lies beyond its run's reach.
+    let runs: Vec<(DVec3, f64, std::ops::Range<usize>)> = (0..course.len())
+        .step_by(COURSE_RUN)
+        .map(|i0| {
+            let run = i0..(i0 + COURSE_RUN).min(course.len());
+            let centre = course[run.clone()].iter().map(|c| c.dir).sum::<DVec3>().normalize();
+            let reach =
+                course[run.clone()].iter().map(|c| c.dir.distance(centre) + c.half / mesh.radius).fold(0.0, f64::max);
+            (centre, reach, run.start + sources.len()..run.end + sources.len())
+        })
+        .collect();
+    if !runs.is_empty() {
+        use rayon::prelude::*;
+        best.par_iter_mut().enumerate().for_each(|(v, slot)| {
+            let u = unit(v as u32);
+            for (centre, reach, ks) in &runs {
+                if u.distance(*centre) > *reach {
+                    continue;
+                }
+                for k in ks.clone() {
+                    let m = channels[k].half - u.distance(channels[k].dir) * mesh.radius;
+                    if m > 0.0 && beats(m, k, *slot) {
+                        *slot = (m, k);
+                    }
+                }
+            }
+        });
+    }
     let mut beds = Vec::new();
     for (v, &(margin, k)) in best.iter().enumerate() {
         let vert = &vs[v];
-        if k == usize::MAX || sources[k].0 == v as u32 || vert.submerged() || vert.flags.contains(VertexFlags::LAKE) {
+        if k == usize::MAX
+            || sources.get(k).is_some_and(|s| s.0 == v as u32)
+            || channels[k].bits == vert.pos.map(f64::to_bits)
+            || vert.submerged()
+            || vert.flags.contains(VertexFlags::LAKE)
+        {
             continue;
         }
-        let (s, h) = sources[k];
-        let level = river_level(&vs[s as usize]);
+        let (h, level) = (channels[k].half, channels[k].level);
         let across = (h - margin) / h;
         let bed = level - centre_depth(h) * (1.0 - across * across);
         let ground = vert.ground.min(bed);
@@ -146,6 +209,9 @@ pub fn channel_beds(
     }
     beds
 }
+
+/// Course vertices tested together against a vertex ([`channel_beds`]).
+const COURSE_RUN: usize = 16;
 
 /// Vertex neighbours over a list of triangles, in compressed rows (an edge shared by two faces
 /// is listed twice; the search does not mind). Not [`Mesh::adjacency`]: that lists the mesh's
@@ -260,10 +326,10 @@ mod tests {
         assert_eq!(carved.vertices, super::carved(&mesh, &tris).vertices);
         let (narrow, tris, _) = strip(40.0);
         assert!(matches!(super::carved(&narrow, &tris), Cow::Borrowed(_)));
-        assert!(channel_beds(&narrow, &tris, None).is_empty());
+        assert!(channel_beds(&narrow, &tris, None, &[]).is_empty());
         // Limits on the half width (195 m) leave it out or in.
-        assert!(channel_beds(&mesh, &tris, Some(&|_| (10.0, 190.0))).is_empty());
-        assert!(channel_beds(&mesh, &tris, Some(&|_| (200.0, 400.0))).is_empty());
-        assert_eq!(channel_beds(&mesh, &tris, Some(&|_| (10.0, 200.0))), channel_beds(&mesh, &tris, None));
+        assert!(channel_beds(&mesh, &tris, Some(&|_| (10.0, 190.0)), &[]).is_empty());
+        assert!(channel_beds(&mesh, &tris, Some(&|_| (200.0, 400.0)), &[]).is_empty());
+        assert_eq!(channel_beds(&mesh, &tris, Some(&|_| (10.0, 200.0)), &[]), channel_beds(&mesh, &tris, None, &[]));
     }
 }

@@ -22,14 +22,16 @@
 //! value, where the ground is dry.
 //!
 //! **Channels.** A channel whose half width spans one to [`MAX_CARVE_EDGES`] of the surface's
-//! target edges at its latitude carves as views carve (`carve.rs`). Where such a channel may
+//! target edges at its latitude floods the surface as views' channels do (`carve.rs`). Where such a channel may
 //! lie near the bbox, the surface is refined past it by twice that half width and a few leaves
 //! and carved; cells sample the carved ground and water. The carving of a vertex depends on the
-//! mesh within that margin only, so blocks and neighbouring tiles agree.
+//! mesh within that margin only, so blocks and neighbouring tiles agree. A wider channel carves
+//! the cells' surface by the distance to its course (`tiles/course.rs`), refined along the river
+//! alone after the surface's faces are listed (they stay the surface's own).
 
 use super::carve::{channel_beds, MAX_CARVE_EDGES};
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{leaf_vertices, PlanetTiles, Refiner, ROOTS};
+use super::tiles::{leaf_vertices, wide_course, PlanetTiles, Refiner, ROOTS};
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
@@ -331,8 +333,8 @@ impl<'a> Surface<'a> {
         // Where a channel nearby may be carved, the surface is refined and carved past the
         // rectangle by a margin, so that a block or a tile carves its cells as a larger
         // request would (`export/carve.rs`).
-        let margin = carve_margin(tiles, rect, cell, rows);
-        let carving = margin.map_or(rect, |m| grown(rect, m / r));
+        let carve = carve_margin(tiles, rect, cell, rows);
+        let carving = carve.map_or(rect, |c| grown(rect, c.margin / r));
         let region = Region::new(carving);
         let mut refiner = tiles.refiner();
         // About one split per cell at the finest, plus the border's.
@@ -384,17 +386,26 @@ impl<'a> Surface<'a> {
             .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
             .collect();
         let mut beds = HashMap::default();
-        if margin.is_some() {
+        if let Some(Carve { margin, course }) = carve {
             let (around, triangles, ids) = leaf_vertices(mesh, &leaves);
+            let target = |dir: DVec3| leaf_target(params, cell, rows, lat_lon(dir).0);
+            // Channels too wide to flood the surface carve by their distance to their course,
+            // refined along the rivers after the faces are listed (the faces stay the
+            // surface's own; the listed faces' corners lie within the margin of the region).
+            let course = course.map_or_else(Vec::new, |widest| {
+                let meets = |u: &[DVec3; 3], reach: f64| region.may_meet_within(u, reach + margin / r);
+                wide_course(&mut refiner, &meets, widest, &|dir| MAX_CARVE_EDGES * target(dir))
+            });
             let limits = |dir: DVec3| {
-                let t = leaf_target(params, cell, rows, lat_lon(dir).0);
+                let t = target(dir);
                 (t, MAX_CARVE_EDGES * t)
             };
-            beds = channel_beds(&around, &triangles, Some(&limits))
+            beds = channel_beds(&around, &triangles, Some(&limits), &course)
                 .into_iter()
                 .map(|(v, g, w)| (ids[v as usize], (g, w)))
                 .collect();
             let inside = Region::new(rect);
+            let mesh = refiner.mesh();
             leaves.retain(|c| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())));
         }
         Surface { tiles, refiner: Some(refiner), leaves, beds }
@@ -570,22 +581,33 @@ impl Drop for Surface<'_> {
     }
 }
 
+/// Where and how a surface carves ([`carve_margin`]).
+#[derive(Clone, Copy, Debug)]
+struct Carve {
+    /// How far (m) past the rectangle the surface is refined and carved.
+    margin: f64,
+    /// The widest channel's half width (m) near it, where channels too wide to flood the
+    /// surface may carve it by their course (`tiles/course.rs`).
+    course: Option<f64>,
+}
+
 /// How far (m) past `rect` a surface refined for cells of `cell` degrees must be refined and
 /// carved so that its cells' carving does not depend on where the refinement stops: twice the
-/// half width of the widest channel that may carve it ([`crate::export::carve`]) and four of
-/// the coarsest leaves. `None` where no channel near it has a half width over the finest
-/// target edge: nothing can be carved there.
-fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Option<f64> {
+/// half width of the widest channel that may flood it ([`crate::export::carve`]) and four of
+/// the coarsest leaves; and whether wider channels may carve it by their course. `None` where
+/// no channel near it has a half width over the finest target edge: nothing can be carved
+/// there.
+fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Option<Carve> {
     let params = tiles.params();
     let r = params.radius_m;
     let channels = tiles.planet().mesh.channels.as_deref()?;
     // The leaves' targets (`Surface::refine`) at the rectangle's most polar and most
-    // equatorial latitudes (a degree more poleward for the nodes reaching past it).
+    // equatorial latitudes (a degree past each for the nodes and sources reaching past it).
     let (s, n) = (rect.south.clamp(-90.0, 90.0), rect.north.clamp(-90.0, 90.0));
     let polar = s.abs().max(n.abs());
     let equatorial = if s <= 0.0 && n >= 0.0 { 0.0 } else { s.abs().min(n.abs()) };
     let target = |lat: f64| leaf_target(params, [dx, dy], rows, lat);
-    let (finest, coarsest) = (target(polar + 1.0), target(equatorial));
+    let (finest, coarsest) = (target(polar + 1.0), target((equatorial - 1.0).max(0.0)));
     // A channel carves where its half width is between the target at its vertex's latitude
     // and MAX_CARVE_EDGES of it (`Surface::refine`).
     let centre = crate::geo::direction(0.5 * (s + n), 0.5 * (rect.west + rect.east));
@@ -597,8 +619,17 @@ fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: 
         .fold(0.0, f64::max);
     let spread = if rect.east - rect.west >= 180.0 { std::f64::consts::PI } else { spread * 1.1 };
     let near = spread + (f64::from(channels.widest()) + 2.0 * LEAF_EDGE_CELLS * coarsest) / r;
-    let half = 0.5 * f64::from(channels.widest_near(centre, near).max(crate::export::water::SMALL_STREAM_M));
-    (half > finest).then_some(2.0 * half.min(MAX_CARVE_EDGES * coarsest) + 4.0 * LEAF_EDGE_CELLS * coarsest)
+    let small = crate::export::water::SMALL_STREAM_M;
+    let half = 0.5 * f64::from(channels.widest_near(centre, near).max(small));
+    if half <= finest {
+        return None;
+    }
+    // Channels that flood are no wider than MAX_CARVE_EDGES coarsest targets.
+    let cap = (2.0 * MAX_CARVE_EDGES * coarsest) as f32 * (1.0 + 1e-6);
+    let flood = 0.5 * f64::from(channels.widest_near_under(centre, near, cap).max(small));
+    let spread = if flood > finest { 2.0 * flood } else { 0.0 };
+    let margin = spread + 4.0 * LEAF_EDGE_CELLS * coarsest;
+    Some(Carve { margin, course: (half > MAX_CARVE_EDGES * finest).then_some(half) })
 }
 
 /// The edge (m) a surface refined for cells of `cell` degrees whose rows divide latitudes as

@@ -173,12 +173,29 @@ fn wet_runs(wet: &[bool], w: usize, h: usize, columns: bool) -> Vec<usize> {
 
 #[test]
 fn dems_carve_wide_rivers_to_their_width_whatever_their_blocks() {
+    // Cells a tenth of the channel (its half width 5 target edges): the DEM floods its own
+    // surface (measured: 10.5 cells across; 1.7 without carving).
+    carves_to_width(10.0, (700, 200), (450, 50, 600, 150));
+}
+
+#[test]
+fn dems_far_finer_than_a_wide_river_carve_it_by_its_course() {
+    // Cells a 40th and a 240th of the channel (its half width 20 and 120 target edges, past
+    // MAX_CARVE_EDGES): the DEM carves by the distance to the river's course (measured:
+    // 35.6 and 202 cells across; 1.7 and 6.7 without).
+    carves_to_width(40.0, (800, 400), (450, 100, 600, 300));
+    carves_to_width(240.0, (800, 720), (450, 300, 600, 420));
+}
+
+/// The test planet's widest river away from the sea, on a grid of `cols x rows` cells of a
+/// `per_width`th of its channel, its vertex on the border between two blocks of 512 columns
+/// and half way down: its water is as wide as its channel, and a `window` (first and last
+/// columns and rows) across the blocks' border has the same cells.
+fn carves_to_width(per_width: f64, (cols, rows): (u32, u32), (c0, r0, c1, r1): (u32, u32, u32, u32)) {
     use crate::export::water::channel_width;
     let t = tiles();
     let base = &t.planet().mesh;
     let sea = t.params().sea_level_m;
-    // The test planet's widest river away from the sea, on a grid of cells a twentieth of it,
-    // its vertex on the border between two blocks of 512 columns.
     let (dir, width) = base
         .vertices
         .iter()
@@ -186,9 +203,8 @@ fn dems_carve_wide_rivers_to_their_width_whatever_their_blocks() {
         .filter_map(|v| Some((v.p(), channel_width(base, v)?)))
         .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
     let (lat, lon) = lat_lon(dir);
-    let cell = (width / 20.0 / t.params().radius_m).to_degrees();
-    let (cols, rows) = (700u32, 200u32);
-    let (w0, n0) = (lon - 512.0 * cell, lat + 100.0 * cell);
+    let cell = (width / per_width / t.params().radius_m).to_degrees();
+    let (w0, n0) = (lon - 512.0 * cell, lat + f64::from(rows / 2) * cell);
     let bbox = |c0: u32, r0: u32, c1: u32, r1: u32| {
         let (w, e) = (w0 + f64::from(c0) * cell, w0 + f64::from(c1) * cell);
         format!("{w},{},{e},{}", n0 - f64::from(r1) * cell, n0 - f64::from(r0) * cell)
@@ -205,9 +221,11 @@ fn dems_carve_wide_rivers_to_their_width_whatever_their_blocks() {
     let (w, h) = (cols as usize, rows as usize);
     let (r, c) = (median(wet_runs(&wet, w, h, false)), median(wet_runs(&wet, w, h, true)));
     let across = (r.powi(-2) + c.powi(-2)).powf(-0.5);
-    assert!((14.0..=26.0).contains(&across), "{across} cells across a channel of 20 ({width} m): runs {r}, {c}");
+    assert!(
+        (0.7 * per_width..=1.3 * per_width).contains(&across),
+        "{across} cells across a channel of {per_width} ({width} m): runs {r}, {c}"
+    );
     // A window across the blocks' border has the same cells, the carving included.
-    let (c0, r0, c1, r1) = (450, 50, 600, 150);
     let small = super::sample_dem(t, &req(c0, r0, c1, r1).unwrap());
     let (mut worst, mut differ, mut wet_cells) = (0f32, 0, 0);
     for r in 0..r1 - r0 {

@@ -83,7 +83,7 @@ pub fn channel_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
 /// Half the channel width (m) of a river vertex off lakes, where the mesh knows its rivers'
 /// widths; `None` for the sea, lakes, land, or without widths. A river vertex of a fine view
 /// far from the base mesh's rivers (a new arm) is a small stream.
-fn half_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
+pub(crate) fn half_width(mesh: &Mesh, v: &Vertex) -> Option<f64> {
     let channels = mesh.channels.as_deref()?;
     let f = v.flags;
     if !f.contains(VertexFlags::RIVER) || f.contains(VertexFlags::LAKE) {

@@ -87,13 +87,23 @@ impl Channels {
     /// take by [`Channels::width_at`]: the widest point within that angle plus the reach; 0
     /// where none.
     pub fn widest_near(&self, dir: DVec3, angle: f64) -> f32 {
+        self.widest_near_under(dir, angle, f32::INFINITY)
+    }
+
+    /// [`Channels::widest_near`] among the channels no wider than `cap` (m).
+    pub fn widest_near_under(&self, dir: DVec3, angle: f64, cap: f32) -> f32 {
+        self.widest_within(dir, angle.to_degrees() + self.reach_deg, cap)
+    }
+
+    /// The widest of the points (m) within `within_deg` degrees of arc of unit direction `dir`
+    /// and no wider than `cap`, the reach not added; 0 where none.
+    pub fn widest_within(&self, dir: DVec3, within_deg: f64, cap: f32) -> f32 {
         let g = &self.points;
         let (cell_deg, rows, cols) = (g.cell_deg(), g.rows(), g.cols());
-        let within_deg = angle.to_degrees() + self.reach_deg;
-        if within_deg >= 180.0 {
+        if within_deg >= 180.0 && self.widest <= cap {
             return self.widest;
         }
-        let max_chord = (within_deg.to_radians() * 0.5).sin() * 2.0;
+        let max_chord = if within_deg >= 180.0 { f64::INFINITY } else { (within_deg.to_radians() * 0.5).sin() * 2.0 };
         let (row, col) = g.row_col(dir);
         let k = (within_deg / cell_deg).ceil() as usize + 1;
         let edge_lat = crate::geo::lat_lon(dir).0.abs() + (k as f64 + 0.5) * cell_deg;
@@ -104,7 +114,7 @@ impl Channels {
         for r in row.saturating_sub(k)..=(row + k).min(rows - 1) {
             for &(c0, c1) in ranges.iter().filter(|(c0, c1)| c0 <= c1) {
                 for &(p, w) in g.row_items(r, c0, c1) {
-                    if DVec3::from_array(p).distance(dir) <= max_chord {
+                    if w <= cap && DVec3::from_array(p).distance(dir) <= max_chord {
                         widest = widest.max(w);
                     }
                 }
@@ -147,6 +157,18 @@ mod tests {
         assert_eq!(near(0.0, -3.0, 0.1), 0.0);
         assert_eq!(near(60.0, -179.0, 0.1), 7.0);
         assert_eq!(near(-60.0, 0.0, 180.0), 300.0);
+        // Among the channels no wider than a cap.
+        let under = |lat: f64, lon: f64, deg: f64, cap: f32| {
+            c.widest_near_under(direction(lat, lon), f64::to_radians(deg), cap)
+        };
+        assert_eq!(under(0.0, -1.0, 0.7, 299.0), 100.0);
+        assert_eq!(under(0.0, -1.0, 0.7, 300.0), 300.0);
+        assert_eq!(under(0.0, 0.5, 0.1, 50.0), 0.0);
+        assert_eq!(under(-60.0, 0.0, 180.0, 200.0), 100.0);
+        // Without the reach: only the points themselves within the angle.
+        assert_eq!(c.widest_within(direction(0.0, 0.5), 0.6, f32::INFINITY), 300.0);
+        assert_eq!(c.widest_within(direction(0.0, 0.5), 0.4, f32::INFINITY), 0.0);
+        assert_eq!(c.widest_within(direction(0.0, -0.3), 0.4, f32::INFINITY), 100.0);
         for lon in [-0.3, 0.2, 0.9, 1.4] {
             let dir = direction(0.1, lon);
             assert!(c.width_at(dir).unwrap_or(0.0) <= c.widest_near(dir, 0.0));

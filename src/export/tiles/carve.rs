@@ -1,21 +1,24 @@
 //! Rivers' channels carved into a tile's content as into a view (`export/carve.rs`), the same
 //! bits in every tile that holds a vertex.
 //!
-//! A channel carves the vertices within its half width of its river vertex that the
+//! A channel floods the vertices within its half width of its river vertex that the
 //! triangulation's edges reach through such vertices, and a channel carves at all only if it is
 //! wide enough for the level. So a vertex's bed depends on the triangulation within twice the
-//! widest channel's half width of it and one ring of faces beyond. A tile
-//! carves its cell together with the leaves of its level's uniform triangulation out to that
-//! distance and two edges more, and keeps its own vertices' beds: two tiles carve their common
-//! border alike, bit for bit, and every tile carves as the level's whole triangulation would.
+//! widest flooding channel's half width of it and one ring of faces beyond. A tile carves its
+//! cell together with the leaves of its level's uniform triangulation out to that distance and
+//! a few edges more, and keeps its own vertices' beds: two tiles carve their common border
+//! alike, bit for bit, and every tile carves as the level's whole triangulation would.
 //!
-//! The widest channel near a cell comes from the base mesh's channel widths
-//! ([`crate::mesh::channels::Channels::widest_near`]). A channel carves a tile where its half
+//! The widest channels near a cell come from the base mesh's channel widths
+//! ([`crate::mesh::channels::Channels::widest_near`]). A channel floods a tile where its half
 //! width is between half the level's nominal edge and [`MAX_CARVE_EDGES`] of them, a rule of
-//! the level alone: where no channel near the cell is that wide, nothing is carved and nothing
-//! more is refined (every coarse level, and fine ones away from great rivers), and the leaves a
-//! tile refines stay bounded.
+//! the level alone; a wider one carves the vertices within its half width of its course
+//! (`course.rs`), which the tile refines along the river alone. Where no channel near the cell
+//! is wider than half an edge (every coarse level, and fine ones away from great rivers),
+//! nothing is carved and nothing more is refined; where none floods, only a ring of faces
+//! around the cell is, for the border's normals. A tile's work stays bounded at every level.
 
+use super::course::wide_course;
 use super::ring::angle;
 use super::tree::{holds, leaf_vertices, Refiner, ROOTS};
 use crate::export::carve::{channel_beds, MAX_CARVE_EDGES};
@@ -55,13 +58,31 @@ pub fn cell_beds(
     if half <= limits.0 {
         return HashMap::new();
     }
-    let reach = wander + (2.0 * half.min(limits.1) + LONGEST_EDGE_SHARE * edge_m) / radius;
+    // The widest channel that floods the level's triangulation (no wider than the limits):
+    // the leaves are gathered out to twice its half width; where none does, a ring of faces
+    // for the border's normals.
+    let cap = (2.0 * limits.1) as f32 * (1.0 + 1e-6);
+    let flood = 0.5 * f64::from(channels.widest_near_under(centre, near, cap).max(SMALL_STREAM_M));
+    let spread = if flood > limits.0 { 2.0 * flood } else { 0.0 };
+    let reach = wander + (spread + LONGEST_EDGE_SHARE * edge_m) / radius;
     let mut around = Vec::new();
     for root in ROOTS {
         gather(refiner, root, depth, (corners, reach), &mut around);
     }
+    // Wider channels carve by their distance to their course.
+    let course = if half > limits.1 {
+        // The gathered leaves' vertices lie within `reach` and a leaf's diameter of the cell.
+        let slack = reach + 2.0 * LONGEST_EDGE_SHARE * edge_m / radius;
+        let meets = |u: &[DVec3; 3], extra: f64| {
+            let (c, r) = disc(*u);
+            outside(c, corners) <= slack + r + extra
+        };
+        wide_course(refiner, &meets, half, &|_| limits.1)
+    } else {
+        Vec::new()
+    };
     let (points, triangles, ids) = leaf_vertices(refiner.mesh(), &around);
-    channel_beds(&points, &triangles, Some(&|_| limits))
+    channel_beds(&points, &triangles, Some(&|_| limits), &course)
         .into_iter()
         .map(|(v, ground, water)| (ids[v as usize], (ground, water)))
         .collect()

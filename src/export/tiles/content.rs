@@ -89,6 +89,8 @@ pub fn tile_content(
     refiner.descendants(cell, spec.content_depth, &mut leaves);
     let (mut surface, ids) = surface_mesh(refiner.mesh(), &leaves);
     let depth = 2 * u32::from(key.level) + spec.content_depth;
+    // The river edges of the cell before the carving refines along wide rivers' courses.
+    let river_edges = cell_river_edges(refiner.mesh(), cell);
     // Wide rivers' channels, carved as the level's whole triangulation would carve them.
     let beds = cell_beds(refiner, cell, &leaves, depth, super::edge_length(params, key.level));
     let radius = surface.radius;
@@ -125,7 +127,7 @@ pub fn tile_content(
     add_skirts(&mut terrain, &surface, &border, origin, spec.skirt_m);
     let mut water = water_mesh(&surface, origin, &triangles, &levels);
     water.translation = None;
-    let rivers = river_lines(refiner, cell, spec, (&surface, &ids, &levels), origin);
+    let rivers = river_lines(refiner, (cell, river_edges), spec, (&surface, &ids, &levels), origin);
     // A tile holds 1,024 triangles (plus skirts, water and rivers): far below the container's
     // limit.
     let glb = encode_glb(&[terrain, water, rivers], compression).expect("a tile fits a .glb");
@@ -141,9 +143,22 @@ pub const PIXELS_PER_EDGE: f64 = 4.0;
 /// (drawn at a tenth of full opacity).
 pub const MIN_TILE_LINE_COVERAGE: f64 = 0.01;
 
+/// The river edges of the mesh with both ends in tree node `cell`, as the mesh is now.
+fn cell_river_edges(mesh: &Mesh, cell: [u32; 3]) -> Vec<(u32, u32)> {
+    let dir = |v: u32| mesh.pos(v).normalize();
+    let corners = cell.map(dir);
+    mesh.edges
+        .iter()
+        .filter(|e| e.kind == crate::mesh::EdgeKind::River)
+        .map(|e| (e.v[0], e.v[1]))
+        .filter(|&(a, b)| holds(corners, dir(a)) && holds(corners, dir(b)))
+        .collect()
+}
+
 /// The perennial rivers inside the cell as lines, like `view.glb`'s
-/// ([`crate::export::view::river_lines_mesh`]): the river edges of the refined mesh with both
-/// ends in the cell (the base mesh's above its resolution, the refined ones below), each end
+/// ([`crate::export::view::river_lines_mesh`]): the `candidates` river edges of the refined
+/// mesh with both ends in the cell (the base mesh's above its resolution, the refined ones
+/// below; [`cell_river_edges`] before the carving refines along rivers' courses), each end
 /// laid on the tile's own surface (the plane of the leaf holding it through its corners at
 /// their ground or water level, lifted by a hundredth of an edge so the line stays above the
 /// triangles it crosses), as opaque as the square root of the share of a pixel the channel covers at the
@@ -153,7 +168,7 @@ pub const MIN_TILE_LINE_COVERAGE: f64 = 0.01;
 /// `origin`.
 fn river_lines(
     refiner: &mut Refiner,
-    cell: [u32; 3],
+    (cell, candidates): ([u32; 3], Vec<(u32, u32)>),
     spec: &ContentSpec,
     (surface, ids, levels): (&Mesh, &[u32], &[f64]),
     origin: DVec3,
@@ -162,17 +177,6 @@ fn river_lines(
     use crate::export::water::flowing_channel;
     let pixel = 2.0 * spec.footprint_m / PIXELS_PER_EDGE;
     let raise = 0.02 * spec.footprint_m;
-    let mesh = refiner.mesh();
-    let dir = |v: u32| mesh.pos(v).normalize();
-    let corners = cell.map(dir);
-    // The river edges of the cell, found on the mesh as it is now.
-    let candidates: Vec<(u32, u32)> = mesh
-        .edges
-        .iter()
-        .filter(|e| e.kind == crate::mesh::EdgeKind::River)
-        .map(|e| (e.v[0], e.v[1]))
-        .filter(|&(a, b)| holds(corners, dir(a)) && holds(corners, dir(b)))
-        .collect();
     let slot: HashMap<u32, usize> = ids.iter().enumerate().map(|(i, &v)| (v, i)).collect();
     let visible = |i: usize| levels[i].max(surface.vertices[i].ground);
     let mut ends: HashMap<u32, u32> = HashMap::new();

@@ -31,6 +31,7 @@
 mod bounds;
 mod carve;
 mod content;
+mod course;
 mod files;
 mod key;
 mod ring;
@@ -39,6 +40,7 @@ mod tree;
 
 pub use bounds::{local_axes, OrientedBox};
 pub use content::{ContentSpec, TileContent};
+pub(crate) use course::wide_course;
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};

@@ -640,3 +640,52 @@ fn tiles_carve_wide_rivers_alike_across_their_borders() {
     assert!(beside * 10 >= count * 9, "{beside} of {count} carved vertices beside a river in the tiles");
     assert!(farthest > 0.6, "the bed reaches {farthest} of the half width ({width} m river, {edge} m edges)");
 }
+
+#[test]
+fn tiles_far_finer_than_a_wide_river_carve_it_by_its_course() {
+    use crate::export::water::{channel_width, water_levels};
+    let t = tiles();
+    let base = &t.planet.mesh;
+    let sea = t.params.sea_level_m;
+    // The test planet's widest river away from the sea; the first level whose edges its half
+    // width spans more than MAX_CARVE_EDGES of, and the first where it spans more than 32.
+    let (dir, width) = base
+        .vertices
+        .iter()
+        .filter(|v| v.ground > sea + 20.0)
+        .filter_map(|v| Some((v.p().normalize(), channel_width(base, v)?)))
+        .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+    let first = |edges: f64| (1..=t.max_level()).find(|&l| t.edge_length(l) * 2.0 * edges < width).expect("a level");
+    for (level, least) in [(first(crate::export::carve::MAX_CARVE_EDGES), 40), (first(32.0), 300)] {
+        // The four tiles of that level around the river vertex: a few edges' worth of the channel.
+        let parent = tile_at(t, dir, level - 1);
+        let contents: Vec<TileContent> = parent.children().iter().map(|&k| t.content(k, Compression::None)).collect();
+        // Neighbours share their border vertices bit for bit and are lit alike.
+        let mut all: Vec<([u64; 3], [u64; 3])> = Vec::new();
+        for c in &contents {
+            let bits = |v: u32| c.surface.vertices[v as usize].pos.map(f64::to_bits);
+            all.extend(content::border_edges(&c.surface.triangles()).iter().map(|&(a, b)| (bits(a), bits(b))));
+        }
+        let set: HashSet<_> = all.iter().copied().collect();
+        let shared = all.iter().filter(|(a, b)| set.contains(&(*b, *a))).count();
+        let outer = content::border_edges(&t.content(parent, Compression::None).surface.triangles()).len() * 2;
+        assert_eq!(shared + outer, all.len(), "level {level}: outer border edges: {outer}");
+        normals_are_seamless(&contents);
+        // Every vertex within half the half width of the river vertex lies under water (the
+        // course passes through it); without the course only those beside the tiles' own river
+        // vertices would (measured at levels 13 and 15: 50 of 50 and 773 of 773; 9 and 73
+        // without).
+        let r = t.params.radius_m;
+        let (mut near, mut wet) = (0, 0);
+        for c in &contents {
+            let levels = water_levels(&c.surface, &c.surface.triangles());
+            for (v, level) in c.surface.vertices.iter().zip(levels) {
+                if v.p().normalize().distance(dir) * r < width / 4.0 {
+                    near += 1;
+                    wet += usize::from(level > v.ground);
+                }
+            }
+        }
+        assert!(near > least && wet == near, "{wet} of {near} vertices near the river under water (level {level})");
+    }
+}

@@ -225,6 +225,15 @@ impl<'a> Refiner<'a> {
         node.iter().all(|&v| v < n) && self.tree.splits_edge(node[1], node[2])
     }
 
+    /// The kind of the base mesh's edge `(a, b)`, if the base mesh has that edge.
+    pub fn base_edge_kind(&self, a: u32, b: u32) -> Option<crate::mesh::EdgeKind> {
+        let n = self.base.vertices.len() as u32;
+        if a >= n || b >= n {
+            return None;
+        }
+        self.base.edge_between(a, b).map(|e| self.base.edges[e as usize].kind)
+    }
+
     /// The two children of `node`.
     pub fn children(&mut self, node: [u32; 3]) -> [[u32; 3]; 2] {
         let [v0, v1, v2] = node;
