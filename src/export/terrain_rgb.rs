@@ -10,7 +10,7 @@
 //! with the split rule of views and tiles; each pixel is the Catmull-Rom cubic through its
 //! 4 x 4 nearest samples, clamped to the range of the nearest 2 x 2 (no ringing at a coast).
 //! So a tile shows the relief down to about 1/40 of its side (the next zoom twice finer) for a
-//! 36th of the splits of a surface refined to its pixels: a cold tile in 10-20 ms (on the
+//! 36th of the splits of a surface refined to its pixels: a cold tile in 8-12 ms (on the
 //! machines of BENCHMARKS.md) instead of 0.3-0.5 s. Against a DEM of the tile refined to its
 //! pixels, r 0.945-0.997.
 //! The two halves of the grid are refined in parallel, each [`MARGIN`] samples past its rows:
@@ -111,23 +111,38 @@ pub fn tile_bounds(z: u8, x: u32, y: u32) -> Result<GeoBounds, TileError> {
 /// The PNG of tile `z/x/y` of the planet.
 /// Paeth filters every row: as small as the adaptive choice on these tiles (within 1 %), and
 /// 0.6-0.8 ms faster a tile.
+/// Made inside rayon's pool (its parallel steps then hand work to the pool's threads without
+/// waking them from outside it each time): a fifth less time over 150 tiles of zoom 12, a p90
+/// of 8-11 ms instead of 13-14 (BENCHMARKS.md). The overview is made first, outside it, so
+/// that no thread of the pool waits for it.
 pub fn dem_tile_png(tiles: &PlanetTiles, z: u8, x: u32, y: u32, encoding: Encoding) -> Result<Vec<u8>, TileError> {
     use image::codecs::png::{CompressionType, FilterType, PngEncoder};
     use image::ImageEncoder;
     use rayon::prelude::*;
-    let ground = tile_heights(tiles, z, x, y)?;
-    let mut rgb = vec![0u8; ground.len() * 3];
-    let row = TILE_SIZE as usize;
-    rgb.par_chunks_mut(3 * row).zip(ground.par_chunks(row)).for_each(|(out, heights)| {
-        for (o, &h) in out.chunks_exact_mut(3).zip(heights) {
-            o.copy_from_slice(&encoding.encode(f64::from(h)));
-        }
-    });
-    let mut png = Vec::new();
-    PngEncoder::new_with_quality(&mut png, CompressionType::Fast, FilterType::Paeth)
-        .write_image(&rgb, TILE_SIZE, TILE_SIZE, image::ExtendedColorType::Rgb8)
-        .expect("PNG encodes into memory");
-    Ok(png)
+    if z <= OVERVIEW_ZOOM {
+        tiles.dem_overview(make_overview);
+    }
+    rayon::scope(|_| {
+        let (samples, side) = tile_samples(tiles, z, x, y)?;
+        let cubics = Cubics::new(&samples, side);
+        let px = TILE_SIZE as usize;
+        let mut rgb = vec![0u8; px * px * 3];
+        rgb.par_chunks_mut(3 * px).enumerate().for_each_init(
+            || vec![0f32; px],
+            |heights, (i, out)| {
+                cubics.line(i, heights);
+                for (o, &h) in out.chunks_exact_mut(3).zip(heights.iter()) {
+                    o.copy_from_slice(&encoding.encode(f64::from(h)));
+                }
+            },
+        );
+        // Room for the whole image uncompressed (the compressed stream's fallback).
+        let mut png = Vec::with_capacity(rgb.len() + rgb.len() / 64 + 1024);
+        PngEncoder::new_with_quality(&mut png, CompressionType::Fast, FilterType::Paeth)
+            .write_image(&rgb, TILE_SIZE, TILE_SIZE, image::ExtendedColorType::Rgb8)
+            .expect("PNG encodes into memory");
+        Ok(png)
+    })
 }
 
 /// The grid of samples of tile `z/x/y`'s surface: [`SAMPLES`] across the tile plus [`RING`]
@@ -159,13 +174,19 @@ pub(crate) fn grid_around(z: u8, x: u32, y: u32, ring: u32) -> Result<DemRequest
 /// [`OVERVIEW_ZOOM`] take their samples from the overview, deeper ones from the surface refined
 /// for their own samples' cells.
 pub fn tile_heights(tiles: &PlanetTiles, z: u8, x: u32, y: u32) -> Result<Vec<f32>, TileError> {
+    let (samples, side) = tile_samples(tiles, z, x, y)?;
+    Ok(upsample(&samples, side))
+}
+
+/// The samples of tile `z/x/y`'s [`sample_grid`], row-major, and their number along a side.
+fn tile_samples(tiles: &PlanetTiles, z: u8, x: u32, y: u32) -> Result<(Vec<f32>, usize), TileError> {
     let grid = sample_grid(z, x, y)?;
     let samples = if z <= OVERVIEW_ZOOM {
         overview_window(tiles.dem_overview(make_overview), z, x, y)
     } else {
         refined_samples(tiles, &grid, &grid_around(z, x, y, RING + MARGIN)?)
     };
-    Ok(upsample(&samples, grid.width as usize))
+    Ok((samples, grid.width as usize))
 }
 
 /// The samples of `grid` from the surface refined over `detail` (the grid and [`MARGIN`]
@@ -269,43 +290,104 @@ fn cubic(t: f64) -> [f64; 4] {
     [0.5 * (-t3 + 2.0 * t2 - t), 0.5 * (3.0 * t3 - 5.0 * t2 + 2.0), 0.5 * (-3.0 * t3 + 4.0 * t2 + t), 0.5 * (t3 - t2)]
 }
 
-/// The tile's pixels from the `side x side` samples of [`sample_grid`]: separable Catmull-Rom,
-/// each pixel clamped to the range of its 2 x 2 nearest samples (no ringing past a coast).
-/// Rows in parallel (the same values whatever the threads).
+/// The tile's pixels from the `side x side` samples of [`sample_grid`] ([`Cubics`]), rows in
+/// parallel (the same values whatever the threads).
 pub(crate) fn upsample(samples: &[f32], side: usize) -> Vec<f32> {
     use rayon::prelude::*;
+    let cubics = Cubics::new(samples, side);
     let px = TILE_SIZE as usize;
-    let step = f64::from(STEP);
-    // Pixel i's centre in sample coordinates (sample k's centre at k): first sample index of
-    // its four and the weights.
-    let taps: Vec<(usize, [f64; 4])> = (0..px)
-        .map(|i| {
-            let u = (i as f64 + 0.5) / step - 0.5 + f64::from(RING);
-            let k = u.floor();
-            (k as usize - 1, cubic(u - k))
-        })
-        .collect();
-    // Rows of samples, columns resampled.
-    let mut wide = vec![0f64; side * px];
-    wide.par_chunks_mut(px).zip(samples.par_chunks(side)).for_each(|(out, row)| {
-        for (o, (k, w)) in out.iter_mut().zip(&taps) {
-            let x = &row[*k..k + 4];
-            *o = w[0] * f64::from(x[0]) + w[1] * f64::from(x[1]) + w[2] * f64::from(x[2]) + w[3] * f64::from(x[3]);
-        }
-    });
     let mut out = vec![0f32; px * px];
-    out.par_chunks_mut(px).zip(taps.par_iter()).for_each(|(line, (k, w))| {
-        let (near, far) = (&samples[(k + 1) * side..], &samples[(k + 2) * side..]);
-        let rows: [&[f64]; 4] = std::array::from_fn(|m| &wide[(k + m) * px..(k + m + 1) * px]);
-        for (j, (o, (c, _))) in line.iter_mut().zip(&taps).enumerate() {
-            let v = w[0] * rows[0][j] + w[1] * rows[1][j] + w[2] * rows[2][j] + w[3] * rows[3][j];
-            let (a, b, d, e) = (near[c + 1], near[c + 2], far[c + 1], far[c + 2]);
-            let lo = a.min(b).min(d).min(e);
-            let hi = a.max(b).max(d).max(e);
-            *o = (v as f32).clamp(lo, hi);
-        }
-    });
+    out.par_chunks_mut(px).enumerate().for_each(|(i, line)| cubics.line(i, line));
     out
+}
+
+/// A tile's pixels from its samples: separable Catmull-Rom, each pixel clamped to the range of
+/// its 2 x 2 nearest samples (no ringing past a coast).
+struct Cubics {
+    /// Per pixel along a side: the first of its four samples and their weights.
+    taps: Vec<(usize, [f64; 4])>,
+    /// The rows of samples resampled along the pixels' columns.
+    wide: Vec<f64>,
+    /// The range of each 2 x 2 block of samples (block (r, c): rows r, r + 1, columns c, c + 1).
+    range: Vec<(f32, f32)>,
+    /// Runs of pixels along a line between the same two sample columns: (block column, pixels).
+    runs: Vec<(usize, usize)>,
+}
+
+impl Cubics {
+    fn new(samples: &[f32], side: usize) -> Cubics {
+        use rayon::prelude::*;
+        let px = TILE_SIZE as usize;
+        let step = f64::from(STEP);
+        // Pixel i's centre in sample coordinates (sample k's centre at k).
+        let taps: Vec<(usize, [f64; 4])> = (0..px)
+            .map(|i| {
+                let u = (i as f64 + 0.5) / step - 0.5 + f64::from(RING);
+                let k = u.floor();
+                (k as usize - 1, cubic(u - k))
+            })
+            .collect();
+        let mut wide = vec![0f64; side * px];
+        wide.par_chunks_mut(px).zip(samples.par_chunks(side)).for_each(|(out, row)| {
+            for (o, (k, w)) in out.iter_mut().zip(&taps) {
+                let x = &row[*k..k + 4];
+                *o = w[0] * f64::from(x[0]) + w[1] * f64::from(x[1]) + w[2] * f64::from(x[2]) + w[3] * f64::from(x[3]);
+            }
+        });
+        let blocks = side - 1;
+        let mut range = vec![(0f32, 0f32); blocks * blocks];
+        range.par_chunks_mut(blocks).enumerate().for_each(|(r, out)| {
+            let (near, far) = (&samples[r * side..(r + 1) * side], &samples[(r + 1) * side..(r + 2) * side]);
+            for (c, o) in out.iter_mut().enumerate() {
+                let (a, b, d, e) = (near[c], near[c + 1], far[c], far[c + 1]);
+                *o = (min(min(a, b), min(d, e)), max(max(a, b), max(d, e)));
+            }
+        });
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        for (k, _) in &taps {
+            match runs.last_mut() {
+                Some((c, n)) if *c == k + 1 => *n += 1,
+                _ => runs.push((k + 1, 1)),
+            }
+        }
+        Cubics { taps, wide, range, runs }
+    }
+
+    /// The heights of line `i` of pixels (from the north) into `out`.
+    fn line(&self, i: usize, out: &mut [f32]) {
+        let px = TILE_SIZE as usize;
+        let (k, w) = self.taps[i];
+        let rows: [&[f64]; 4] = std::array::from_fn(|m| &self.wide[(k + m) * px..(k + m + 1) * px]);
+        let blocks = self.range.len() / (self.wide.len() / px - 1);
+        let range = &self.range[(k + 1) * blocks..(k + 2) * blocks];
+        let mut j = 0;
+        for &(c, n) in &self.runs {
+            let (lo, hi) = range[c];
+            let [r0, r1, r2, r3] = rows.map(|r| &r[j..j + n]);
+            for ((((o, a), b), d), e) in out[j..j + n].iter_mut().zip(r0).zip(r1).zip(r2).zip(r3) {
+                *o = min(max((w[0] * a + w[1] * b + w[2] * d + w[3] * e) as f32, lo), hi);
+            }
+            j += n;
+        }
+    }
+}
+
+/// The least of two finite values (without `f32::min`'s care for NaN).
+fn min(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The greatest of two finite values.
+fn max(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// The tile URL template of the server's elevation tiles under `base` (ending before `/{z}`).
