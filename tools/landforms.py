@@ -12,8 +12,13 @@ regional map) and crops of the ETOPO5 Earth DEM at 2048x1024 (~20 km; the map is
 Earth averaged to 512x256, and the planet's DEM is cut at the crop's 2048 grid).
 
     python3 tools/landforms.py [--bin target/release/riverworld] [--shared ../shared] [--only NAME]
+                               [--by-river]
 
-Prints a Markdown table (one row per case) and writes the DEMs under target/landforms/.
+Prints a Markdown table (one row per case) and writes the DEMs under target/landforms/. With
+`--by-river`, then for each Earth crop: the std of the 4 x 4 block means of (planet - bilinear
+map) against the same for the real DEM (the departure at the map's own pixels), and planet
+minus real DEM by distance to the nearest cell with water on land (band 2 above the ground and
+the sea; chessboard distance in cells).
 """
 import argparse
 import json
@@ -51,6 +56,33 @@ def write_geotiff(path, a, west, north, dx, dy):
     ])
 
 
+def by_river(name, planet_path, real, coarse):
+    """Where the planet departs from its map and from the real DEM: see the module's doc."""
+    import rasterio
+    from landform import upsample
+    with rasterio.open(planet_path) as d:
+        ground, water = d.read(1).astype(np.float64), d.read(2).astype(np.float64)
+    up = upsample(coarse, real.shape)
+    blocks = (box(ground - up, 4).std(), box(real - up, 4).std())
+    wet = np.isfinite(water) & (water > ground) & (water > 0.01)
+    # Chessboard distance to the nearest wet cell, by repeated 3 x 3 dilation.
+    dist = np.where(wet, 0, np.inf)
+    reached = wet.copy()
+    for k in range(1, 7):
+        grown = reached.copy()
+        for dy in (-1, 0, 1):
+            for dx in (-1, 0, 1):
+                grown |= np.roll(np.roll(reached, dy, 0), dx, 1)
+        dist[grown & ~reached] = k
+        reached = grown
+    dev = ground - real
+    cells = []
+    for lo, hi in ((0, 0), (1, 1), (2, 3), (4, 6), (7, np.inf)):
+        m = (dist >= lo) & (dist <= hi)
+        cells.append(f"{dev[m].mean():+.1f} ({dev[m].std():.1f}) m" if m.any() else "-")
+    return f"| {name} | {blocks[0]:.1f} / {blocks[1]:.1f} m | " + " | ".join(cells) + " |"
+
+
 def planet_dem(binary, map_path, bbox, width, height, out):
     extra = os.environ.get("RIVERWORLD_DEM_ARGS", "").split()
     cmd = [binary, "dem", *extra, "--map", map_path, "--bbox", ",".join(f"{v:.10f}" for v in bbox),
@@ -80,6 +112,7 @@ def main():
     ap.add_argument("--bin", default="target/release/riverworld")
     ap.add_argument("--shared", default="../shared")
     ap.add_argument("--only")
+    ap.add_argument("--by-river", action="store_true")
     args = ap.parse_args()
     sys.path.insert(0, os.path.join(args.shared, "tools"))
     from landform import compare
@@ -115,6 +148,7 @@ def main():
     map_path = f"{out}/earth_512_map.tif"
     if not os.path.exists(map_path):
         write_geotiff(map_path, box(earth, 4), -180.0, 90.0, 4 * d, 4 * d)
+    rivers = []
     for name, w, s, e, n, what in EARTH_CROPS:
         if args.only and args.only != name:
             continue
@@ -127,6 +161,12 @@ def main():
         dy = d * metres_per_degree()
         dx = dy * np.cos(np.radians((bbox[1] + bbox[3]) / 2))
         print(row(name, what, compare(planet, real, coarse, dx, dy), stats))
+        if args.by_river:
+            rivers.append(by_river(name, f"{out}/{name}_dem.tif", real, coarse))
+    if rivers:
+        print("\n| crop | block means' std, planet / real | on water | 1 cell | 2-3 | 4-6 | 7 and more |")
+        print("|---|---:|---:|---:|---:|---:|---:|")
+        print("\n".join(rivers))
 
 
 if __name__ == "__main__":
