@@ -310,6 +310,8 @@ struct Cubics {
     wide: Vec<f64>,
     /// The range of each 2 x 2 block of samples (block (r, c): rows r, r + 1, columns c, c + 1).
     range: Vec<(f32, f32)>,
+    /// Blocks along a side (one fewer than the samples).
+    blocks: usize,
     /// Runs of pixels along a line between the same two sample columns: (block column, pixels).
     runs: Vec<(usize, usize)>,
 }
@@ -350,7 +352,7 @@ impl Cubics {
                 _ => runs.push((k + 1, 1)),
             }
         }
-        Cubics { taps, wide, range, runs }
+        Cubics { taps, wide, range, blocks, runs }
     }
 
     /// The heights of line `i` of pixels (from the north) into `out`.
@@ -358,8 +360,7 @@ impl Cubics {
         let px = TILE_SIZE as usize;
         let (k, w) = self.taps[i];
         let rows: [&[f64]; 4] = std::array::from_fn(|m| &self.wide[(k + m) * px..(k + m + 1) * px]);
-        let blocks = self.range.len() / (self.wide.len() / px - 1);
-        let range = &self.range[(k + 1) * blocks..(k + 2) * blocks];
+        let range = &self.range[(k + 1) * self.blocks..(k + 2) * self.blocks];
         let mut j = 0;
         for &(c, n) in &self.runs {
             let (lo, hi) = range[c];
