@@ -107,9 +107,12 @@ impl BuildError {
 }
 
 /// Refinement edge length a map needs, in map pixels: nine for a continent bitmap (a coast
-/// needs no finer), four for an elevation map, whose heights the mesh must keep.
+/// needs no finer), two for an elevation map, whose heights the mesh must keep. (At four, a
+/// 512-pixel Earth map got 313 km edges where the face budget allows 165 km, and its rivers,
+/// valleys and banks departed from the map at its own pixels twice as much as the real relief
+/// does: docs/realism.md, "2026-12-06 (night)".)
 const PIXELS_PER_EDGE: f64 = 9.0;
-const ELEVATION_PIXELS_PER_EDGE: f64 = 4.0;
+const ELEVATION_PIXELS_PER_EDGE: f64 = 2.0;
 /// Refinement edges inside a map's bounds are no shorter than what gives the bounds about this
 /// many faces before mountains are inserted (which about quadruples them): a global map finer
 /// than 2048 pixels across gets the mesh of one at 2048 (~170 km refinement edges), not one

@@ -50,8 +50,10 @@ pub const HYBRID: f64 = 0.5;
 /// Edge length at which the whole range has flattened to half.
 pub const RELIEF_LENGTH: f64 = 200_000.0;
 /// The range per metre of the map's roughness within a pixel (`Guide::relief_at`), at an edge
-/// one map pixel long; it falls with the square root of the edge below that.
-pub const MAP_RELIEF: f64 = 2.0;
+/// one map pixel long; it falls with the square root of the edge below that. (3 since the base
+/// mesh of an elevation map holds two map pixels per edge: with less relief cascading from
+/// long edges, mountain slopes need more from the map's own roughness; 2 before.)
+pub const MAP_RELIEF: f64 = 3.0;
 /// The share of eq. 12's steepest slope `s_g` at which a diamond's detail has faded to nothing.
 pub const THRESHOLD: f64 = 0.35;
 /// Below about this edge length the range falls faster than the edge, so that the ground is
