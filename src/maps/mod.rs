@@ -16,6 +16,7 @@ mod geotiff;
 mod margin;
 mod png;
 mod precipitation;
+mod sharpen;
 #[cfg(test)]
 mod test_support;
 #[cfg(test)]

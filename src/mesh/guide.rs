@@ -6,6 +6,10 @@
 //! (`altitude.rs`), so views, tiles and DEMs show the map's valleys and ridges wherever it has
 //! them, and add random detail only below its resolution.
 //!
+//! **Values.** The map's pixels are means over their areas; the guide takes the values whose
+//! bilinear surface keeps those means (`Map::mean_preserving`), which recovers about half of
+//! the relief a bilinear reading of the pixels flattens at two to four pixels.
+//!
 //! **Grid.** The map is resampled, once per planet, onto gnomonic grids: the six faces of a
 //! cube for a global map, one tangent plane at the bounds' centre for a regional map. A
 //! direction `d` is looked up on the face whose centre `c` it is nearest (largest `d·c`) at
@@ -68,6 +72,8 @@ impl Guide {
         if map.kind != MapKind::Elevation {
             return None;
         }
+        // The pixels read as means over their areas (see `Map::mean_preserving`).
+        let map = &map.mean_preserving();
         let (dlon, dlat) = map.pixel_size_deg();
         let pixel = dlat.to_radians(); // tangent-plane units near a face's centre
         let b = map.bounds;
