@@ -72,8 +72,6 @@ impl Guide {
         if map.kind != MapKind::Elevation {
             return None;
         }
-        // The pixels read as means over their areas (see `Map::mean_preserving`).
-        let map = &map.mean_preserving();
         let (dlon, dlat) = map.pixel_size_deg();
         let pixel = dlat.to_radians(); // tangent-plane units near a face's centre
         let b = map.bounds;
@@ -140,6 +138,18 @@ impl Guide {
             };
             (vec![face], side)
         };
+        // The pixels read as means over their areas (`Map::mean_preserving`), from the map
+        // box-averaged to about the grid's cells where its pixels are finer than half of them
+        // (the grid cannot hold more, and a 64-Mpixel map is not copied at full size).
+        let k = (faces[0].step / cell).floor().max(1.0) as u32;
+        let filtered;
+        let source = if k > 1 {
+            filtered = map.box_filtered(k);
+            &filtered
+        } else {
+            map
+        };
+        let map = &source.mean_preserving();
         // Up to 6 x 1024^2 samples, each with its own trigonometry: in parallel, in order.
         let values: Vec<f32> = (0..faces.len() as u32 * side * side)
             .into_par_iter()
