@@ -415,12 +415,14 @@ fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, 
     if hi > lo {
         height = (mean - lo) / (hi - lo);
     }
-    let floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length);
+    var floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length);
     let relief = edge_len * (p.relief * slope + p.altitude_gain * max(mean - p.sea_level, 0.0lf)) * (p.hybrid + height);
     let threshold = max(p.one - slope / (p.threshold * p.ground_slope), 0.0lf);
     var mapped = 0.0lf;
     if map_pixel > 0.0lf {
         mapped = p.map_relief * map_relief * sqrt(edge_len / map_pixel);
+        // As on the CPU: the floor no larger than twice what the map's roughness gives.
+        floor = min(floor, mapped + mapped);
     }
     let fade = edge_len / (edge_len + p.smooth_length);
     let range = (floor + relief + mapped) * threshold / (p.one + edge_len / p.relief_length) * fade;

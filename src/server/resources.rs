@@ -233,7 +233,8 @@ fn render(
 /// reach and wet land's gain; 20: wide rivers' channels carved into views; 21: and into 3D
 /// Tiles and DEMs; 22: and into tiles and DEMs far finer than them, by their course, the
 /// flooding bound 32 -> 8 edges; 23: elevation maps' base meshes at two map pixels per edge,
-/// the map's roughness carried below its pixel at 3x, the guide's pixels read as means), so
+/// the map's roughness carried below its pixel at 3x, the guide's pixels read as means, flat
+/// map pixels' floor), so
 /// that caches holding the old bytes under a strong,
 /// immutable `ETag` see a new one.
 pub const ANSWERS_REVISION: &str = "23";

@@ -6,7 +6,8 @@
 //! - **Relief.** The offset's range grows with the diamond's slope (its relief, highest corner
 //!   less lowest, over the edge) times the edge, and with its altitude above the sea: mountains
 //!   gain rugged detail, hills some, and plains, deltas and coastal lowlands little beyond a
-//!   floor of a few metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres). Ground nearing
+//!   floor of a few metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres, and under an
+//!   elevation map at most twice the map's roughness term below). Ground nearing
 //!   the steepest slope allowed (eq. 12's `s_g`, by [`THRESHOLD`]) gains less and at last none:
 //!   a threshold hillslope, where landslides stop further steepening (and eq. 12 stays
 //!   satisfiable). As one level's offsets steepen the diamonds of the next, roughness cascades
@@ -84,6 +85,9 @@ pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64, map:
     // The map's own roughness within a pixel (`map[0]` metres, pixels `map[1]` metres wide),
     // carried down as real relief falls below a map's pixel: with the square root of the scale.
     let mapped = if map[1] > 0.0 { MAP_RELIEF * map[0] * (edge_len / map[1]).sqrt() } else { 0.0 };
+    // Under an elevation map the floor is no larger than twice what the map's roughness gives:
+    // ground the map shows flat (the Amazon's) stays about as flat below its pixel.
+    let floor = if map[1] > 0.0 { floor.min(mapped + mapped) } else { floor };
     // Ground near the steepest slope allowed gains no more detail: a threshold hillslope.
     let threshold = (1.0 - slope / (THRESHOLD * max_slope)).max(0.0);
     let fade = edge_len / (edge_len + SMOOTH_LENGTH);
@@ -147,14 +151,20 @@ mod tests {
     fn a_rugged_map_pixel_keeps_its_ground_rugged_below_it() {
         let g = [SEA + 500.0; 4];
         let pixel = 40_000.0;
-        let (plain, ..) = landform_range(g, 10_000.0, SEA, S_G, [0.0, pixel]);
+        // Against the same ground without a map (the floor alone).
+        let (plain, ..) = landform_range(g, 10_000.0, SEA, S_G, [0.0; 2]);
         let (rugged, ..) = landform_range(g, 10_000.0, SEA, S_G, [800.0, pixel]);
         assert!(rugged > plain + 0.9 * MAP_RELIEF * 800.0 * 0.5, "{rugged} vs {plain}");
         // With the square root of the edge: a quarter of the edge, half of the map's share.
         let (quarter, ..) = landform_range(g, 2_500.0, SEA, S_G, [800.0, pixel]);
-        let (quarter_plain, ..) = landform_range(g, 2_500.0, SEA, S_G, [0.0, pixel]);
+        let (quarter_plain, ..) = landform_range(g, 2_500.0, SEA, S_G, [0.0; 2]);
         let (share, share_quarter) = (rugged - plain, quarter - quarter_plain);
         assert!((share_quarter / share - 0.5).abs() < 0.05, "{share} {share_quarter}");
+        // A pixel the map shows flat keeps its ground flatter than the floor alone would: a few
+        // metres of roughness give at most twice their share.
+        let (flat, ..) = landform_range(g, 10_000.0, SEA, S_G, [0.0, pixel]);
+        let (gentle, ..) = landform_range(g, 10_000.0, SEA, S_G, [5.0, pixel]);
+        assert!(flat < gentle && gentle < 0.5 * plain, "{flat} {gentle} vs {plain}");
     }
 
     #[test]
