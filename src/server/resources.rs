@@ -234,9 +234,8 @@ fn render(
 /// Tiles and DEMs; 22: and into tiles and DEMs far finer than them, by their course, the
 /// flooding bound 32 -> 8 edges; 23: elevation maps' base meshes at two map pixels per edge,
 /// the map's roughness carried below its pixel at 3x, the guide's pixels read as means, flat
-/// map pixels' floor), so
-/// that caches holding the old bytes under a strong,
-/// immutable `ETag` see a new one.
+/// map pixels' floor), so that caches holding the old bytes under a strong, immutable `ETag`
+/// see a new one.
 pub const ANSWERS_REVISION: &str = "23";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and

@@ -84,10 +84,14 @@ pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64, map:
     let relief = edge_len * (RELIEF * slope + ALTITUDE * (mean - sea).max(0.0)) * (HYBRID + height);
     // The map's own roughness within a pixel (`map[0]` metres, pixels `map[1]` metres wide),
     // carried down as real relief falls below a map's pixel: with the square root of the scale.
-    let mapped = if map[1] > 0.0 { MAP_RELIEF * map[0] * (edge_len / map[1]).sqrt() } else { 0.0 };
-    // Under an elevation map the floor is no larger than twice what the map's roughness gives:
-    // ground the map shows flat (the Amazon's) stays about as flat below its pixel.
-    let floor = if map[1] > 0.0 { floor.min(mapped + mapped) } else { floor };
+    // Under a map, the floor is no larger than twice what its roughness gives: ground the
+    // map shows flat (the Amazon's) stays about as flat below its pixel.
+    let (mapped, floor) = if map[1] > 0.0 {
+        let mapped = MAP_RELIEF * map[0] * (edge_len / map[1]).sqrt();
+        (mapped, floor.min(mapped + mapped))
+    } else {
+        (0.0, floor)
+    };
     // Ground near the steepest slope allowed gains no more detail: a threshold hillslope.
     let threshold = (1.0 - slope / (THRESHOLD * max_slope)).max(0.0);
     let fade = edge_len / (edge_len + SMOOTH_LENGTH);
