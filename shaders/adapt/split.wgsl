@@ -445,6 +445,19 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         lens[i] = distance3(at_unit, normalize3(triple(around[i].pos))) * p.radius;
         grounds[i] = around[i].ground;
     }
+    // As on the CPU: under an elevation map, a river's bank gives way where the map shows the
+    // ground below it (`holds`).
+    var at_map = Guided(false, 0.0lf);
+    if p.guide_faces > 0u {
+        at_map = guide_at(at_unit);
+    }
+    var holds: array<bool, 4>;
+    for (var i = 0u; i < 4u; i++) {
+        let v = around[i];
+        let gives_way = (vertex_flags(v) & FLAG_RIVER) != 0u && (vertex_flags(v) & FLAG_LAKE) == 0u && at_map.found
+            && p.sea_level + at_map.metres < riverbank_floor(v, lens[i]);
+        holds[i] = is_wet(v) && !gives_way;
+    }
     var bank_lo = p.sea_level + p.one;
     var slope_lo = -F64_MAX;
     var any_lo = -F64_MAX;
@@ -453,7 +466,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         let v = around[i];
         let le = lens[i];
         let below = v.ground - le * p.ground_slope;
-        if is_wet(v) {
+        if holds[i] {
             bank_lo = max(bank_lo, riverbank_floor(v, le));
         } else {
             slope_lo = max(slope_lo, below);
@@ -501,12 +514,8 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
 
     // As on the CPU: the elevation map's ground where it resolves the split edge.
     var wanted: f64;
-    var mapped = Guided(false, 0.0lf);
-    if edge_len >= p.guide_min_edge && p.guide_faces > 0u {
-        mapped = guide_at(at_unit);
-    }
-    if mapped.found {
-        wanted = p.sea_level + mapped.metres;
+    if edge_len >= p.guide_min_edge && at_map.found {
+        wanted = p.sea_level + at_map.metres;
     } else {
         var map_relief = 0.0lf;
         var map_pixel = 0.0lf;
@@ -527,7 +536,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     }
     var surface = F64_MIN;
     for (var i = 0u; i < 4u; i++) {
-        if is_wet(around[i]) {
+        if holds[i] {
             surface = max(surface, around[i].water);
         }
     }

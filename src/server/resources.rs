@@ -234,9 +234,10 @@ fn render(
 /// Tiles and DEMs; 22: and into tiles and DEMs far finer than them, by their course, the
 /// flooding bound 32 -> 8 edges; 23: elevation maps' base meshes at two map pixels per edge,
 /// the map's roughness carried below its pixel at 3x, the guide's pixels read as means, flat
-/// map pixels' floor), so that caches holding the old bytes under a strong, immutable `ETag`
-/// see a new one.
-pub const ANSWERS_REVISION: &str = "23";
+/// map pixels' floor; 24: under an elevation map, riverbanks give way where the map shows
+/// lower ground), so that caches holding the old bytes under a strong, immutable `ETag` see a
+/// new one.
+pub const ANSWERS_REVISION: &str = "24";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

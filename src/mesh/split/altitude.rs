@@ -167,6 +167,18 @@ fn continent_vertex(
         return (v, kinds);
     }
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
+    // Under an elevation map, a river's bank (eq. 11) gives way where the map shows the ground
+    // below it: the base mesh's rivers run at its vertices only, and a vertex between a
+    // river high on a plateau's rim and the foot of its escarpment, or across a divide from
+    // it, is not on that river's bank. Lifting it to the river's water (the paper's rule)
+    // would smear every front and terrace the land beside every river.
+    let at_map = guide.and_then(|g| g.at(dir)).map(|m| p.sea_level_m + m);
+    let holds = |v: &Vertex, le: f64| {
+        is_wet(v)
+            && !(v.flags.contains(VertexFlags::RIVER)
+                && !v.flags.contains(VertexFlags::LAKE)
+                && at_map.is_some_and(|m| m < riverbank_floor(v, le, p)))
+    };
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
     // sea level. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
@@ -180,7 +192,7 @@ fn continent_vertex(
     let mut hi = f64::MAX;
     for (v, le) in around.iter().zip(lens) {
         let below = v.ground - le * p.ground_slope();
-        if is_wet(v) {
+        if holds(v, le) {
             bank_lo = bank_lo.max(riverbank_floor(v, le, p));
         } else {
             slope_lo = slope_lo.max(below);
@@ -223,9 +235,9 @@ fn continent_vertex(
 
     // Where the planet's elevation map resolves the split edge, its ground; below that (or
     // without a map), the neighbours' mean plus a random offset.
-    let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and_then(|g| g.at(dir));
+    let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and(at_map);
     let wanted = match mapped {
-        Some(m) => p.sea_level_m + m,
+        Some(m) => m,
         None => {
             let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
             landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope(), map)
@@ -246,9 +258,11 @@ fn continent_vertex(
     };
     // Water: a vertex below a wet neighbour's water surface lies in that river's channel (eq.
     // 11 lets a bank near a deep river sit below the surface) or lake and is covered up to the
-    // highest such surface; otherwise it is dry. (The paper averages the four neighbours' water
+    // highest such surface; otherwise it is dry (so is one below a river whose bank gave way
+    // to the map: it lies off that river's valley). (The paper averages the four neighbours' water
     // levels, which leaves a vertex below one river's surface dry when the others are lower.)
-    let surface = around.iter().filter(|v| is_wet(v)).map(|v| v.water).fold(f64::MIN, f64::max);
+    let surface =
+        around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
     let water = if g < surface { surface } else { g };
     let mut v = Vertex::new(lifted(g), seed);
     v.ground = g;
@@ -259,7 +273,68 @@ fn continent_vertex(
 
 #[cfg(test)]
 mod tests {
-    use super::least_steep;
+    use super::{least_steep, riverbank_floor, split_vertex};
+    use crate::geo::direction;
+    use crate::maps::{GeoBounds, Map, MapKind};
+    use crate::mesh::guide::Guide;
+    use crate::mesh::{Diamond, Edge, EdgeKind, Face, Lod, SplitSite, Vertex, VertexFlags};
+    use crate::params::Params;
+
+    /// A continent diamond ~7 km across at (0°, 0°): the split edge `a -> b` runs east, `a` a
+    /// river vertex `river` metres above sea level, the other corners dry ground 400 m up.
+    fn beside_a_river(p: &Params, river: f64) -> Diamond {
+        let r = p.radius_m;
+        let at = |lat: f64, lon: f64, ground: f64| {
+            let mut v = Vertex::new(direction(lat, lon) * (r + ground), 0);
+            v.ground = ground;
+            v.water = ground;
+            v
+        };
+        let sea = p.sea_level_m;
+        let mut a = at(0.0, -0.03, sea + river - 5.0);
+        a.water = sea + river;
+        a.flags = VertexFlags::RIVER;
+        Diamond {
+            site: SplitSite { edge: 0, a: 0, b: 1, t: 2, d: 3, f1: 0, f2: 1 },
+            edge: Edge { v: [0, 1], f: [0, 1], lod: Lod::default(), level: 0, kind: EdgeKind::Continent, land: 3 },
+            faces: [Face { e: [0, 1, 2] }, Face { e: [0, 3, 4] }],
+            corners: [a, at(0.0, 0.03, sea + 400.0), at(0.03, 0.0, sea + 400.0), at(-0.03, 0.0, sea + 400.0)],
+            radius: r,
+        }
+    }
+
+    /// A regional elevation map of 0.1° pixels, `metres` everywhere.
+    fn flat_map(p: &Params, metres: f32) -> Guide {
+        let b = GeoBounds { west: -1.0, south: -1.0, east: 1.0, north: 1.0 };
+        let map = Map::from_values(MapKind::Elevation, 20, 20, b, vec![metres; 400]).unwrap();
+        Guide::from_map(&map, p.radius_m).unwrap()
+    }
+
+    #[test]
+    fn a_riverbank_gives_way_where_the_map_has_lower_ground() {
+        let p = Params::earth();
+        // A river 1,000 m up beside ground 400 m up: without a map, eq. 11 lifts the new vertex
+        // onto the river's bank.
+        let d = beside_a_river(&p, 1_000.0);
+        let bank = |v: &Vertex| {
+            let le = v.p().normalize().distance(d.a().p().normalize()) * p.radius_m;
+            riverbank_floor(d.a(), le, &p)
+        };
+        let (free, _) = split_vertex(&d, &p, None);
+        assert!(free.ground >= bank(&free) - 1e-9 && free.ground > p.sea_level_m + 1_000.0, "{}", free.ground);
+        // A map showing the ground 400 m up: the vertex takes the landform's value (the
+        // corners' mean, 549 m, plus at most ~320 m of ridge and offset), below the river's
+        // water, and stays dry, off the river's valley (the river is on a rim above it).
+        let low = flat_map(&p, 400.0);
+        let (v, _) = split_vertex(&d, &p, Some(&low));
+        assert!(v.ground < d.a().water - 100.0, "{}", v.ground);
+        assert_eq!(v.water, v.ground, "dry below the rim");
+        // A map showing the ground above the bank: the bank holds (the landform's mean of the
+        // corners is lower still).
+        let high = flat_map(&p, 1_200.0);
+        let (v, _) = split_vertex(&d, &p, Some(&high));
+        assert!(v.ground >= bank(&v) - 1e-9, "{} under the bank {}", v.ground, bank(&v));
+    }
 
     #[test]
     fn least_steep_balances_the_steepest_pair() {
