@@ -446,7 +446,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         grounds[i] = around[i].ground;
     }
     // As on the CPU: under an elevation map, a river's bank gives way where the map shows the
-    // ground below it (`holds`).
+    // ground below it (`bank_gives_way`).
     var at_map = Guided(false, 0.0lf);
     if p.guide_faces > 0u {
         at_map = guide_at(at_unit);

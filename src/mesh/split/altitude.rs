@@ -48,6 +48,19 @@ pub fn riverbank_floor(v: &Vertex, le: f64, p: &Params) -> f64 {
     (v.ground + le * p.riverbed_slope()).min(v.water + p.riverbed_edge_height_m + le * p.near_river_slope())
 }
 
+/// Whether the bank of the wet vertex `v` (eq. 11's floor `le` metres from it, and its water's
+/// cover) gives way at a vertex where an elevation map shows the ground at `map` (m above the
+/// base sphere): a river's (not a lake's or the sea's) does where the map is below the floor.
+/// The base mesh's rivers run at its vertices only, and a vertex between a river high on a
+/// plateau's rim and the foot of its escarpment, or across a divide from it, is not on that
+/// river's bank; lifting it onto the river's water (the paper's rule) would smear every front
+/// and terrace the land beside every river.
+pub fn bank_gives_way(v: &Vertex, le: f64, map: Option<f64>, p: &Params) -> bool {
+    v.flags.contains(VertexFlags::RIVER)
+        && !v.flags.contains(VertexFlags::LAKE)
+        && map.is_some_and(|m| m < riverbank_floor(v, le, p))
+}
+
 /// The altitude that minimises the steepest slope towards neighbours at `(ground, horizontal
 /// distance)`: the bounds `ground ± k distance` meet for the smallest `k` at which the tightest
 /// pair touches (in one dimension, intervals that meet pairwise meet all together), and that
@@ -167,18 +180,9 @@ fn continent_vertex(
         return (v, kinds);
     }
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
-    // Under an elevation map, a river's bank (eq. 11) gives way where the map shows the ground
-    // below it: the base mesh's rivers run at its vertices only, and a vertex between a
-    // river high on a plateau's rim and the foot of its escarpment, or across a divide from
-    // it, is not on that river's bank. Lifting it to the river's water (the paper's rule)
-    // would smear every front and terrace the land beside every river.
+    // Under an elevation map, a river's bank gives way where the map shows lower ground.
     let at_map = guide.and_then(|g| g.at(dir)).map(|m| p.sea_level_m + m);
-    let holds = |v: &Vertex, le: f64| {
-        is_wet(v)
-            && !(v.flags.contains(VertexFlags::RIVER)
-                && !v.flags.contains(VertexFlags::LAKE)
-                && at_map.is_some_and(|m| m < riverbank_floor(v, le, p)))
-    };
+    let holds = |v: &Vertex, le: f64| is_wet(v) && !bank_gives_way(v, le, at_map, p);
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
     // sea level. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
