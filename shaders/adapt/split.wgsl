@@ -382,6 +382,13 @@ fn riverbank_floor(v: Vertex, le: f64) -> f64 {
     return min(v.ground + le * p.riverbed_slope, v.water + p.riverbed_edge_height + le * p.near_river_slope);
 }
 
+// `bank_gives_way`: a river's bank (not a lake's or the sea's) gives way where the elevation
+// map at the new vertex shows the ground below eq. 11's floor.
+fn bank_gives_way(v: Vertex, le: f64, at_map: Guided) -> bool {
+    return (vertex_flags(v) & FLAG_RIVER) != 0u && (vertex_flags(v) & FLAG_LAKE) == 0u && at_map.found
+        && p.sea_level + at_map.metres < riverbank_floor(v, le);
+}
+
 // `least_steep`: the altitude whose steepest slope to the neighbours is least.
 fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
     var best_k = -F64_MAX;
@@ -446,17 +453,14 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         grounds[i] = around[i].ground;
     }
     // As on the CPU: under an elevation map, a river's bank gives way where the map shows the
-    // ground below it (`bank_gives_way`).
+    // ground below it.
     var at_map = Guided(false, 0.0lf);
     if p.guide_faces > 0u {
         at_map = guide_at(at_unit);
     }
     var holds: array<bool, 4>;
     for (var i = 0u; i < 4u; i++) {
-        let v = around[i];
-        let gives_way = (vertex_flags(v) & FLAG_RIVER) != 0u && (vertex_flags(v) & FLAG_LAKE) == 0u && at_map.found
-            && p.sea_level + at_map.metres < riverbank_floor(v, lens[i]);
-        holds[i] = is_wet(v) && !gives_way;
+        holds[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map);
     }
     var bank_lo = p.sea_level + p.one;
     var slope_lo = -F64_MAX;

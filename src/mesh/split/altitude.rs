@@ -263,8 +263,9 @@ fn continent_vertex(
     // Water: a vertex below a wet neighbour's water surface lies in that river's channel (eq.
     // 11 lets a bank near a deep river sit below the surface) or lake and is covered up to the
     // highest such surface; otherwise it is dry (so is one below a river whose bank gave way
-    // to the map: it lies off that river's valley). (The paper averages the four neighbours' water
-    // levels, which leaves a vertex below one river's surface dry when the others are lower.)
+    // to the map: it lies off that river's valley). (The paper averages the four neighbours'
+    // water levels, which leaves a vertex below one river's surface dry when the others are
+    // lower.)
     let surface =
         around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
     let water = if g < surface { surface } else { g };
