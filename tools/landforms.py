@@ -11,7 +11,7 @@ Cases: the Jacksboro DEM (~90 m, Cumberland Mountains; the map is its 4x average
 regional map) and crops of the ETOPO5 Earth DEM at 2048x1024 (~20 km; the map is the whole
 Earth averaged to 512x256, and the planet's DEM is cut at the crop's 2048 grid).
 
-    python3 tools/landforms.py [--bin target/release/riverworld] [--shared ../shared] [--only NAME]
+    python3 tools/landforms.py [--bin target/release/riverworld] [--shared ../shared] [--only NAME,...]
                                [--by-river]
 
 Prints a Markdown table (one row per case) and writes the DEMs under target/landforms/. With
@@ -125,7 +125,7 @@ def main():
     # Jacksboro: regional map, 4x average of the 90 m DEM (and, beyond the protocol, 16x: 1.4 km
     # map pixels, so that eight bisections of detail lie between the map and the DEM).
     for name, k in (("jacksboro", 4), ("jacksboro_16x", 16)):
-        if args.only and args.only != name:
+        if args.only and name not in args.only.split(","):
             continue
         meta = json.load(open(os.path.join(args.shared, "maps/region_jacksboro_tn_403x344.json")))
         real = tifffile.imread(os.path.join(args.shared, "maps", meta["geotiff"])).astype(np.float64)
@@ -150,7 +150,7 @@ def main():
         write_geotiff(map_path, box(earth, 4), -180.0, 90.0, 4 * d, 4 * d)
     rivers = []
     for name, w, s, e, n, what in EARTH_CROPS:
-        if args.only and args.only != name:
+        if args.only and name not in args.only.split(","):
             continue
         c0, c1 = round((w + 180) / d / 4) * 4, round((e + 180) / d / 4) * 4
         r0, r1 = round((90 - n) / d / 4) * 4, round((90 - s) / d / 4) * 4

@@ -106,6 +106,8 @@ struct SplitParams {
     threshold: f64,
     map_relief: f64,
     ridge: f64,
+    floor_fade: f64,
+    altitude_length: f64,
     // Slots where the new vertices, edges and faces start.
     vertices: u32,
     edges: u32,

@@ -422,8 +422,10 @@ fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, 
     if hi > lo {
         height = (mean - lo) / (hi - lo);
     }
-    var floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length);
-    let relief = edge_len * (p.relief * slope + p.altitude_gain * max(mean - p.sea_level, 0.0lf)) * (p.hybrid + height);
+    var floor = p.floor_slope * edge_len / (p.one + edge_len / p.floor_length) / (p.one + edge_len / p.floor_fade);
+    let up = max(mean - p.sea_level, 0.0lf);
+    let high = up / p.altitude_length;
+    let relief = edge_len * (p.relief * slope + p.altitude_gain * up * (p.one + high * high)) * (p.hybrid + height);
     let threshold = max(p.one - slope / (p.threshold * p.ground_slope), 0.0lf);
     var mapped = 0.0lf;
     if map_pixel > 0.0lf {

@@ -6,7 +6,7 @@
 //! network floods upwards from the coast and rivers settle in the map's valleys.
 
 use crate::maps::Map;
-use crate::mesh::split::altitude::riverbank_floor;
+use crate::mesh::split::altitude::{bank_gives_way, riverbank_floor};
 use crate::mesh::split::position::{altitude_random, lift, split_position, split_seed, tangent_towards};
 use crate::mesh::{split_kinds, Diamond, EdgeKind, Mesh, SplitSite, Tangent, Vertex, VertexFlags, NONE};
 use crate::params::Params;
@@ -40,37 +40,6 @@ pub struct RiverReport {
     /// Relief maps: lake per vertex (`NONE` off lakes) and each lake's level and outlet.
     pub lake_of: Vec<u32>,
     pub lake_levels: Vec<super::relief::LakeLevel>,
-}
-
-/// How far a river vertex's water lies from the map at the vertex towards its lowest bank.
-/// Every inland vertex of the base mesh is a river vertex standing for the ground around it;
-/// its water at the map would lift the mountain vertices between rivers above the map (eq. 11
-/// keeps them above the banks), at the lowest bank it would sink the valleys. Measured on the
-/// Earth DEM at 2048x1024 (`tools/map_fidelity.py`): 0 gives a bias of +53 m, 1 of -87 m, 0.3 of
-/// +4 m with the best median error (39 m) and correlation (0.989).
-const VALLEY_DEPTH: f64 = 0.3;
-
-/// The altitude (m relative to sea level) of the valley a river vertex stands for on a relief
-/// map: the map at the vertex, lowered [`VALLEY_DEPTH`] of the way towards the lowest ground
-/// half way to a neighbour (less the riverbank's height and eq. 11's slope), so that the banks
-/// the mountain vertices make between rivers (eq. 11) stand near the map instead of being
-/// lifted above it.
-fn valley_floor(mesh: &Mesh, adj: &crate::mesh::Adjacency, map: &Map, v: u32, at: Option<f64>, p: &Params) -> f64 {
-    let own = at.unwrap_or(0.0);
-    let mut h = own;
-    let pv = mesh.pos(v);
-    for (w, e) in adj.around(v) {
-        if mesh.edges[e as usize].kind != EdgeKind::Continent {
-            continue;
-        }
-        let mid = (pv + mesh.pos(w)) * 0.5;
-        let (lat, lon) = lat_lon(mid);
-        if let Some(m) = map.sample(lat, lon) {
-            let le = mesh.edge_length(e) * 0.5;
-            h = h.min(f64::from(m) - p.riverbed_edge_height_m - le * p.near_river_slope());
-        }
-    }
-    own + (h - own) * VALLEY_DEPTH
 }
 
 /// Water each vertex yields as runoff from land (m³/yr), loses as open water, evaporation
@@ -252,9 +221,10 @@ pub fn build_rivers(
     let mut sinks: Vec<u32> = Vec::new();
     let relief_levels = relief.map(|map| {
         let route: Vec<f64> = (0..n).map(|v| if coast[v] { 0.0 } else { route[v].unwrap_or(0.0) }).collect();
-        let height: Vec<f64> = (0..n)
-            .map(|v| if coast[v] { 0.0 } else { valley_floor(mesh, &adj, map, v as u32, elevation[v], p) })
-            .collect();
+        // A river vertex's water stands at the map (its valley, lakes filled, barriers breached
+        // below): the mountain vertices between rivers follow the map too, as eq. 11's banks
+        // give way to it (`base_split_vertex`).
+        let height: Vec<f64> = (0..n).map(|v| if coast[v] { 0.0 } else { elevation[v].unwrap_or(0.0) }).collect();
         let area = vertex_areas(mesh);
         let (_, dlat) = map.pixel_size_deg();
         let pixel = dlat.to_radians() * mesh.radius;
@@ -405,7 +375,14 @@ pub fn build_rivers(
     if !report.lake_of.is_empty() {
         report.lake_of.resize(n, NONE);
     }
-    report.mountains = insert_mountains(mesh, params, relief, seed, &mut gradient, &mut report.lake_of);
+    // The mountain vertices read the map's pixels as means over their areas (as the guide does
+    // for the splits below the base mesh): a bilinear reading of the pixels flattens the
+    // ridges and valleys two to four pixels across, about the base mesh's spacing. Whether one
+    // lies under a lake, the pixels say as they are (sharpened, the shallows beside a lake's
+    // shore overshoot its surface: a third of the Caspian's middle came out dry).
+    let means = relief.map(|m| (m, m.mean_preserving()));
+    let maps = means.as_ref().map(|(m, means)| (*m, means));
+    report.mountains = insert_mountains(mesh, params, maps, seed, &mut gradient, &mut report.lake_of);
     report
 }
 
@@ -472,11 +449,12 @@ fn sea_floor(mesh: &mut Mesh, adj: &crate::mesh::Adjacency, p: &Params, elevatio
 
 /// Inserts a continent vertex into every continent edge between river or coast vertices, and
 /// into coast edges joining two river mouths; the bisection closure splits whatever edges
-/// must go first, with the paper's split rules. Returns the number of mountain vertices made.
+/// must go first, with the paper's split rules; `relief` is the elevation map, as it is and as
+/// means (`Map::mean_preserving`). Returns the number of mountain vertices made.
 fn insert_mountains(
     mesh: &mut Mesh,
     p: &Params,
-    relief: Option<&Map>,
+    relief: Option<(&Map, &Map)>,
     seed: u64,
     gradient: &mut Vec<f64>,
     lake_of: &mut Vec<u32>,
@@ -513,12 +491,13 @@ fn insert_mountains(
 
 /// The new vertex of a base-mesh split: positions as in §5.3 step 5 (on the base sphere; the
 /// build lifts every vertex to its altitude at the end), altitudes by step 6 for sea, coast and
-/// river edges, and eq. 5 for continent edges, which become mountains.
+/// river edges, and eq. 5 for continent edges, which become mountains; `relief` as for
+/// [`insert_mountains`].
 fn base_split_vertex(
     m: &Mesh,
     site: &SplitSite,
     p: &Params,
-    relief: Option<&Map>,
+    relief: Option<(&Map, &Map)>,
     planet_seed: u64,
     gradient: &mut Vec<f64>,
     lake_of: &mut Vec<u32>,
@@ -561,11 +540,21 @@ fn base_split_vertex(
                 .unwrap_or(around[0]);
             let unit_pos = pos.normalize() * m.radius;
             let horizontal = |q: &Vertex| unit_pos.distance(q.p().normalize() * m.radius);
-            // Eq. 10–11: above every riverbank next to it by the riverbed rules.
+            let (lat, lon) = lat_lon(pos);
+            let mapped = relief.and_then(|(_, means)| means.sample(lat, lon)).map(|h| sea + h as f64);
+            // Eq. 10–11: above every riverbank next to it by the riverbed rules, except a
+            // river's where the map shows lower ground (as for the splits below the base mesh,
+            // `bank_gives_way`): every inland base vertex is a river vertex, and one between a
+            // river on a plateau's rim and the foot of its escarpment, or across a divide, is
+            // not on its bank (lifted onto it, the map's fronts were smeared over a base edge
+            // and every interfluve raised: +53 m over the Earth DEM's land with rivers at the map).
             let mut lo = f64::MIN;
             let mut hi = p.max_mountain_altitude_m;
             for (_, v) in around {
                 let le = horizontal(v);
+                if bank_gives_way(v, le, mapped, p) {
+                    continue;
+                }
                 if v.flags.intersects(wet) || v.submerged() {
                     lo = lo.max(riverbank_floor(v, le, p));
                 } else {
@@ -574,8 +563,6 @@ fn base_split_vertex(
                     hi = hi.min(v.ground + le * p.ground_slope());
                 }
             }
-            let (lat, lon) = lat_lon(pos);
-            let mapped = relief.and_then(|map| map.sample(lat, lon)).map(|h| sea + h as f64);
             let wanted = match mapped {
                 Some(h) => h,
                 // A mountain belt lifts the ridges between rivers by its full height.
@@ -588,8 +575,9 @@ fn base_split_vertex(
             // its bed, under water (no island the map does not have).
             let lake = lake_of.get(site.a as usize).copied().filter(|&l| l != NONE);
             let surface = va.water.max(vb.water);
-            match mapped {
-                Some(h) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h < surface => (
+            let as_is = relief.and_then(|(map, _)| map.sample(lat, lon)).map(|h| sea + h as f64);
+            match (mapped, as_is) {
+                (Some(h), Some(h0)) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h0 < surface => (
                     pos,
                     h.min(surface - p.riverbed_edge_height_m),
                     surface,

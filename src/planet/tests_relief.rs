@@ -269,6 +269,7 @@ fn a_lake_stays_water_as_the_view_refines_it() {
         let near: Vec<&crate::mesh::Vertex> =
             a.mesh().vertices.iter().filter(|v| distance_km(lat_lon(v.p()), (lat, lon)) < 120.0).collect();
         let dry = near.iter().filter(|v| !v.submerged()).count();
+        eprintln!("{h}: {dry} of {} dry", near.len());
         assert!(near.len() > 1000 && dry * 4 <= near.len(), "{h}: {dry} of {} dry", near.len());
         let lake = crate::mesh::VertexFlags::LAKE;
         let beds = a.mesh().vertices.iter().filter(|v| v.flags.contains(lake));

@@ -235,9 +235,11 @@ fn render(
 /// flooding bound 32 -> 8 edges; 23: elevation maps' base meshes at two map pixels per edge,
 /// the map's roughness carried below its pixel at 3x, the guide's pixels read as means, flat
 /// map pixels' floor; 24: under an elevation map, riverbanks give way where the map shows
-/// lower ground), so that caches holding the old bytes under a strong, immutable `ETag` see a
-/// new one.
-pub const ANSWERS_REVISION: &str = "24";
+/// lower ground; 25: an elevation map's base mesh at the map (rivers' water at it, mountain
+/// vertices at its means, banks giving way), plateaus' roughness with the square of their
+/// altitude, the floor fading beyond hillslopes), so that caches holding the old bytes under
+/// a strong, immutable `ETag` see a new one.
+pub const ANSWERS_REVISION: &str = "25";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -61,6 +61,8 @@ impl SplitParams {
             threshold: landform::THRESHOLD,
             map_relief: landform::MAP_RELIEF,
             ridge: landform::RIDGE,
+            floor_fade: landform::FLOOR_FADE,
+            altitude_length: landform::ALTITUDE_LENGTH,
             vertices: lens.0 as u32,
             edges: lens.1 as u32,
             faces: lens.2 as u32,

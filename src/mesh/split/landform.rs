@@ -5,12 +5,13 @@
 //!
 //! - **Relief.** The offset's range grows with the diamond's slope (its relief, highest corner
 //!   less lowest, over the edge) times the edge, and with its altitude above the sea: mountains
-//!   gain rugged detail, hills some, and plains, deltas and coastal lowlands little beyond a
-//!   floor of a few metres (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres, and under an
-//!   elevation map at most twice the map's roughness term below). Ground nearing
-//!   the steepest slope allowed (eq. 12's `s_g`, by [`THRESHOLD`]) gains less and at last none:
-//!   a threshold hillslope, where landslides stop further steepening (and eq. 12 stays
-//!   satisfiable). As one level's offsets steepen the diamonds of the next, roughness cascades
+//!   gain rugged detail (high plateaus more, with the square of their altitude), hills some,
+//!   and plains, deltas and coastal lowlands little beyond a floor of a few metres at the
+//!   scale of hillslopes (at most [`FLOOR_SLOPE`] `*` [`FLOOR_LENGTH`] metres, falling again
+//!   beyond [`FLOOR_FADE`], and under an elevation map at most twice the map's roughness term
+//!   below). Ground nearing the steepest slope allowed (eq. 12's `s_g`, by [`THRESHOLD`])
+//!   gains less and at last none: a threshold hillslope, where landslides stop further
+//!   steepening (and eq. 12 stays satisfiable). As one level's offsets steepen the diamonds of the next, roughness cascades
 //!   as in a multifractal: steep ground grows steeper detail, flat ground stays flat.
 //! - **The map's roughness.** Under an elevation map, the roughness of the map's pixel at the
 //!   vertex (the twist of its bilinear patch, zero on planes: `Guide::relief_at`) adds
@@ -37,15 +38,26 @@
 
 use crate::rng::{salt, unit};
 
-/// The floor's range per metre of a short edge (flat ground), and the edge length at which it
-/// has flattened to half of that.
+/// The floor's range per metre of a short edge (flat ground), the edge length at which it has
+/// flattened to half of that, and the one beyond which it falls again (as one over the edge):
+/// the floor is the roughness of flat ground at the scale of hillslopes; over tens of
+/// kilometres a plain's relief is the map's and its slopes' business (a floor of ~120 m at
+/// every level up to the base mesh added to the plains' shortest wavelengths, where the Great
+/// Plains held 5.5 times the real power at 40-60 km).
 pub const FLOOR_SLOPE: f64 = 0.3;
 pub const FLOOR_LENGTH: f64 = 400.0;
+pub const FLOOR_FADE: f64 = 5_000.0;
 /// The relief term's range per metre of edge per unit of the diamond's slope.
 pub const RELIEF: f64 = 1.6;
-/// The relief term's range per metre of edge per metre of altitude above the sea (3 m per km of
-/// edge at 1,000 m up): high plateaus are rough even where the map shows them flat.
-pub const ALTITUDE: f64 = 3.0e-6;
+/// The relief term's range per metre of edge per metre of altitude above the sea, which grows
+/// with the square of the altitude beyond [`ALTITUDE_LENGTH`]: 1.1 m per km of edge at 1,000 m
+/// up, 33 m at 5,000 m. High plateaus are rough even where the map shows them flat, lowland
+/// plains far less so: on the Earth DEM at 2048x1024 (20 km cells) the median slope is 181 m
+/// per cell above 5 km in the Himalaya's crop and 65 m at 1-2 km in the Great Plains', while a
+/// map of 80 km pixels resolves a smaller share of the plateau's relief (tools/landforms.py:
+/// with a linear term the plateau's slopes came out 0.64 of the real ones, the foothills' 0.98).
+pub const ALTITUDE: f64 = 0.9e-6;
+pub const ALTITUDE_LENGTH: f64 = 2_000.0;
 /// Weight of the relief term at the diamond's lowest point (`HYBRID + 1` at its highest).
 pub const HYBRID: f64 = 0.5;
 /// Edge length at which the whole range has flattened to half.
@@ -80,8 +92,10 @@ pub fn landform_range(g: [f64; 4], edge_len: f64, sea: f64, max_slope: f64, map:
     let slope = (hi - lo) / edge_len;
     // Where the diamond's mean stands in its range: 0 at its lowest corner, 1 at its highest.
     let height = if hi > lo { (mean - lo) / (hi - lo) } else { 0.5 };
-    let floor = FLOOR_SLOPE * edge_len / (1.0 + edge_len / FLOOR_LENGTH);
-    let relief = edge_len * (RELIEF * slope + ALTITUDE * (mean - sea).max(0.0)) * (HYBRID + height);
+    let floor = FLOOR_SLOPE * edge_len / (1.0 + edge_len / FLOOR_LENGTH) / (1.0 + edge_len / FLOOR_FADE);
+    let up = (mean - sea).max(0.0);
+    let high = up / ALTITUDE_LENGTH;
+    let relief = edge_len * (RELIEF * slope + ALTITUDE * up * (1.0 + high * high)) * (HYBRID + height);
     // The map's own roughness within a pixel (`map[0]` metres, pixels `map[1]` metres wide),
     // carried down as real relief falls below a map's pixel: with the square root of the scale.
     // Under a map, the floor is no larger than twice what its roughness gives: ground the
@@ -131,14 +145,21 @@ mod tests {
         // A high plateau, flat on the map, is rougher than a lowland plain.
         let (tibet, ..) = landform_range([SEA + 4_500.0; 4], len, SEA, S_G, [0.0; 2]);
         assert!(tibet > 1.1 * flat, "{tibet} vs {flat}");
+        // ... and the altitude term grows faster than the altitude: five times as high, more
+        // than ten times the roughness.
+        let (high, ..) = landform_range([SEA + 5_000.0; 4], len, SEA, S_G, [0.0; 2]);
+        let (low, ..) = landform_range([SEA + 1_000.0; 4], len, SEA, S_G, [0.0; 2]);
+        let (sea, ..) = landform_range([SEA; 4], len, SEA, S_G, [0.0; 2]);
+        assert!(high - sea > 10.0 * (low - sea), "{high} {low} {sea}");
     }
 
     #[test]
     fn detail_falls_with_scale_and_flattens_for_long_edges() {
         let g = |len: f64| {
-            let rise = 0.1 * len; // the same slope at every scale
+            // The same slope at every scale, about the same mean altitude.
+            let half = 0.05 * len;
             landform_range(
-                [SEA + 1_000.0, SEA + 1_000.0 + rise, SEA + 1_000.0 + rise, SEA + 1_000.0],
+                [SEA + 1_000.0 - half, SEA + 1_000.0 + half, SEA + 1_000.0 + half, SEA + 1_000.0 - half],
                 len,
                 SEA,
                 S_G,
@@ -149,6 +170,15 @@ mod tests {
         assert!(g(100.0) < g(1_000.0) && g(1_000.0) < g(10_000.0));
         // Flattened beyond RELIEF_LENGTH: a 2,000 km edge gains less than ten times a 200 km one.
         assert!(g(2_000_000.0) < 10.0 * g(200_000.0));
+    }
+
+    #[test]
+    fn a_lowland_plain_gains_its_floor_at_hillslope_scale_only() {
+        let flat = |len: f64| landform_range([SEA + 100.0; 4], len, SEA, S_G, [0.0; 2]).0;
+        // Rising with the edge up to about a kilometre and a half...
+        assert!(flat(100.0) < flat(500.0) && flat(500.0) < flat(1_000.0));
+        // ... falling beyond: a 50 km split of a plain gains less than a 5 km one.
+        assert!(flat(50_000.0) < 0.5 * flat(5_000.0), "{} {}", flat(50_000.0), flat(5_000.0));
     }
 
     #[test]
@@ -167,7 +197,7 @@ mod tests {
         // A pixel the map shows flat keeps its ground flatter than the floor alone would: a few
         // metres of roughness give at most twice their share.
         let (flat, ..) = landform_range(g, 10_000.0, SEA, S_G, [0.0, pixel]);
-        let (gentle, ..) = landform_range(g, 10_000.0, SEA, S_G, [5.0, pixel]);
+        let (gentle, ..) = landform_range(g, 10_000.0, SEA, S_G, [2.0, pixel]);
         assert!(flat < gentle && gentle < 0.5 * plain, "{flat} {gentle} vs {plain}");
     }
 
