@@ -11,8 +11,9 @@
 //!   beyond [`FLOOR_FADE`], and under an elevation map at most twice the map's roughness term
 //!   below). Ground nearing the steepest slope allowed (eq. 12's `s_g`, by [`THRESHOLD`])
 //!   gains less and at last none: a threshold hillslope, where landslides stop further
-//!   steepening (and eq. 12 stays satisfiable). As one level's offsets steepen the diamonds of the next, roughness cascades
-//!   as in a multifractal: steep ground grows steeper detail, flat ground stays flat.
+//!   steepening (and eq. 12 stays satisfiable). As one level's offsets steepen the diamonds of
+//!   the next, roughness cascades as in a multifractal: steep ground grows steeper detail, flat
+//!   ground stays flat.
 //! - **The map's roughness.** Under an elevation map, the roughness of the map's pixel at the
 //!   vertex (the twist of its bilinear patch, zero on planes: `Guide::relief_at`) adds
 //!   [`MAP_RELIEF`] times itself at one pixel, falling with the square root of the edge: where
