@@ -380,9 +380,9 @@ pub fn build_rivers(
     // ridges and valleys two to four pixels across, about the base mesh's spacing. Whether one
     // lies under a lake, the pixels say as they are (sharpened, the shallows beside a lake's
     // shore overshoot its surface: a third of the Caspian's middle came out dry).
-    let means = relief.map(|m| (m, m.mean_preserving()));
-    let maps = means.as_ref().map(|(m, means)| (*m, means));
-    report.mountains = insert_mountains(mesh, params, maps, seed, &mut gradient, &mut report.lake_of);
+    let means = relief.map(Map::mean_preserving);
+    report.mountains =
+        insert_mountains(mesh, params, relief.zip(means.as_ref()), seed, &mut gradient, &mut report.lake_of);
     report
 }
 
@@ -575,9 +575,10 @@ fn base_split_vertex(
             // its bed, under water (no island the map does not have).
             let lake = lake_of.get(site.a as usize).copied().filter(|&l| l != NONE);
             let surface = va.water.max(vb.water);
-            let as_is = relief.and_then(|(map, _)| map.sample(lat, lon)).map(|h| sea + h as f64);
-            match (mapped, as_is) {
-                (Some(h), Some(h0)) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && h0 < surface => (
+            let under =
+                || relief.and_then(|(map, _)| map.sample(lat, lon)).is_some_and(|h| sea + f64::from(h) < surface);
+            match mapped {
+                Some(h) if lake.is_some_and(|l| lake_of[site.b as usize] == l) && under() => (
                     pos,
                     h.min(surface - p.riverbed_edge_height_m),
                     surface,
