@@ -32,9 +32,10 @@ pub struct Buckets<T> {
 }
 
 impl<T> Buckets<T> {
-    /// Buckets `items` at their unit directions on cells of `cell_deg` degrees (0.01-30).
+    /// Buckets `items` at their unit directions on cells of `cell_deg` degrees (0.0001-30: 11 m
+    /// to 3,300 km).
     pub fn new(cell_deg: f64, items: Vec<(DVec3, T)>) -> Buckets<T> {
-        let cell_deg = cell_deg.clamp(0.01, 30.0);
+        let cell_deg = cell_deg.clamp(1e-4, 30.0);
         let (rows, cols) = ((180.0 / cell_deg).ceil() as usize, (360.0 / cell_deg).ceil() as usize);
         let mut grid = Buckets { cell_deg, rows, cols, cells: Vec::new(), start: vec![0], items: Vec::new() };
         let mut keyed: Vec<(u64, usize, T)> =

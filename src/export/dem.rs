@@ -18,8 +18,11 @@
 //!
 //! **Bands** (float32, metres relative to sea level): 1 `ground_m`, the ground (the sea floor
 //! under the sea: the raster has no hole there); 2 `water_m`, the water surface where water
-//! stands (sea, lakes, rivers wide enough for the grid's triangles) and NaN, the file's no-data
-//! value, where the ground is dry.
+//! stands, as views draw it (`water.rs`: the sea, lakes, and rivers' channels at their width,
+//! none where a channel is narrower than an eighth of the edges at its vertex, nor on a dry
+//! bed), and NaN, the file's no-data value, where the ground is dry. A vertex's level depends
+//! on the faces around it, so the surface is refined and flooded past the rectangle by a ring
+//! of leaves: blocks and neighbouring tiles agree.
 //!
 //! **Channels.** A channel whose half width spans one to [`MAX_CARVE_EDGES`] of the surface's
 //! target edges at its latitude floods the surface as views' channels do (`carve.rs`). Where such a channel may
@@ -29,9 +32,10 @@
 //! the cells' surface by the distance to its course (`tiles/course.rs`), refined along the river
 //! alone after the surface's faces are listed (they stay the surface's own).
 
-use super::carve::{channel_beds, MAX_CARVE_EDGES};
+use super::carve::{channel_beds, lay_bed, MAX_CARVE_EDGES};
 use super::cog::{write_cog, CogRaster};
-use super::tiles::{leaf_vertices, wide_course, PlanetTiles, Refiner, ROOTS};
+use super::tiles::{leaf_vertices_from, wide_course, PlanetTiles, Refiner, ROOTS};
+use super::water::water_levels;
 use crate::geo::lat_lon;
 use crate::maps::GeoBounds;
 use crate::mesh::raster::{inside, triangle_bounds, weights, wrap180};
@@ -319,8 +323,11 @@ struct Surface<'a> {
     refiner: Option<Refiner<'a>>,
     /// Faces of the refined (conforming) mesh that may meet the rectangle.
     leaves: Vec<[u32; 3]>,
-    /// Ground and water (m above the base sphere) of the vertices a channel carved.
-    beds: HashMap<u32, (f64, f64)>,
+    /// The same faces as corners in `heights`.
+    local: Vec<[u32; 3]>,
+    /// Ground (carved) and water level (`water::water_levels`), m above the base sphere, of
+    /// the vertices of the faces listed past the rectangle.
+    heights: Vec<[f64; 2]>,
 }
 
 impl<'a> Surface<'a> {
@@ -330,11 +337,11 @@ impl<'a> Surface<'a> {
         let [dx, dy] = cell;
         let params = tiles.params();
         let r = params.radius_m;
-        // Where a channel nearby may be carved, the surface is refined and carved past the
-        // rectangle by a margin, so that a block or a tile carves its cells as a larger
-        // request would (`export/carve.rs`).
+        // The surface is refined past the rectangle by a margin, and its channels carved and
+        // water levels taken there, so that a block or a tile carves and floods its cells as a
+        // larger request would (`export/carve.rs`, `export/water.rs`).
         let carve = carve_margin(tiles, rect, cell, rows);
-        let carving = carve.map_or(rect, |c| grown(rect, c.margin / r));
+        let carving = grown(rect, carve.margin / r);
         let region = Region::new(carving);
         let mut refiner = tiles.refiner();
         // About one split per cell at the finest, plus the border's.
@@ -378,16 +385,15 @@ impl<'a> Surface<'a> {
         // faces do. The index lists the base faces near the rectangle and every face a split
         // added.
         let mesh = refiner.mesh();
-        let mut leaves: Vec<[u32; 3]> = tiles
+        let leaves: Vec<[u32; 3]> = tiles
             .faces()
             .candidates(&carving, mesh.faces.len())
             .into_iter()
             .map(|f| mesh.corners(f))
             .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
             .collect();
-        let mut beds = HashMap::default();
-        if let Some(Carve { margin, course }) = carve {
-            let (around, triangles, ids) = leaf_vertices(mesh, &leaves);
+        let (mut around, triangles, _) = leaf_vertices_from(mesh, &leaves, refiner.base_vertices());
+        if let Carve { margin, floods: true, course } = carve {
             let target = |dir: DVec3| leaf_target(params, cell, rows, lat_lon(dir).0);
             // Channels too wide to flood the surface carve by their distance to their course,
             // refined along the rivers after the faces are listed (the faces stay the
@@ -400,15 +406,26 @@ impl<'a> Surface<'a> {
                 let t = target(dir);
                 (t, MAX_CARVE_EDGES * t)
             };
-            beds = channel_beds(&around, &triangles, Some(&limits), &course)
-                .into_iter()
-                .map(|(v, g, w)| (ids[v as usize], (g, w)))
-                .collect();
-            let inside = Region::new(rect);
-            let mesh = refiner.mesh();
-            leaves.retain(|c| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())));
+            for (v, ground, water) in channel_beds(&around, &triangles, Some(&limits), &course) {
+                lay_bed(&mut around.vertices[v as usize], r, ground, water);
+            }
         }
-        Surface { tiles, refiner: Some(refiner), leaves, beds }
+        // The water surface as views draw it: the sea and lakes flat at their level, rivers'
+        // channels at their width, none where a channel is too narrow for the faces at it or
+        // dry part of the year. Each vertex's level depends on every face around it, listed
+        // here: the margin holds a ring of leaves past the rectangle's. (Before, each face with a
+        // submerged corner flooded to its level: 30 % of the Jacksboro DEM's land cells at 90 m
+        // were water, beside streams a few metres wide.)
+        let levels = water_levels(&around, &triangles);
+        let heights = around.vertices.iter().zip(levels).map(|(v, level)| [v.ground, level]).collect();
+        let inside = Region::new(rect);
+        let mesh = refiner.mesh();
+        let (leaves, local) = leaves
+            .into_iter()
+            .zip(triangles)
+            .filter(|(c, _)| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())))
+            .unzip();
+        Surface { tiles, refiner: Some(refiner), leaves, local, heights }
     }
 
     fn refiner(&self) -> &Refiner<'a> {
@@ -440,30 +457,14 @@ impl<'a> Surface<'a> {
             .flat_map(|&(sa, ca)| lons.iter().map(move |&(so, co)| DVec3::new(ca * co, ca * so, sa)))
             .collect();
         let row_map = req.row_map();
-        // Ground and water of cell `i` on the triangle `leaf` with edge planes `n`.
-        let beds = &self.beds;
-        let sample = |i: usize, leaf: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
+        // Ground and water of cell `i` on the triangle with corners `local` in `heights` and
+        // edge planes `n`: water where the level, interpolated as the ground is, stands above it.
+        let heights = &self.heights;
+        let sample = |i: usize, local: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
             let wgt = weights(n, dirs[i]);
-            // Ground and water of each corner, as carved.
-            let vs = leaf.map(|v| {
-                let vert = &mesh.vertices[v as usize];
-                if beds.is_empty() {
-                    (vert.ground, vert.water)
-                } else {
-                    beds.get(&v).copied().unwrap_or((vert.ground, vert.water))
-                }
-            });
-            let submerged = |k: usize| vs[k].1 > vs[k].0;
-            let g: f64 = (0..3).map(|k| f64::from(wgt[k]) * vs[k].0).sum();
-            let mut water = f32::NAN;
-            // Water: the face's highest standing water at its dry corners (as `water.rs` does).
-            let wet = (0..3).filter(|&k| submerged(k)).map(|k| vs[k].1).fold(f64::NEG_INFINITY, f64::max);
-            if wet > f64::NEG_INFINITY {
-                let level: f64 = (0..3).map(|k| f64::from(wgt[k]) * if submerged(k) { vs[k].1 } else { wet }).sum();
-                if level > g {
-                    water = (level - sea) as f32;
-                }
-            }
+            let [g, level] =
+                [0, 1].map(|b| (0..3).map(|k| f64::from(wgt[k]) * heights[local[k] as usize][b]).sum::<f64>());
+            let water = if level > g { (level - sea) as f32 } else { f32::NAN };
             ((g - sea) as f32, water)
         };
         // Latitude, longitude and projected latitude (the rows' coordinate) of each vertex,
@@ -491,7 +492,7 @@ impl<'a> Surface<'a> {
         const EPS: f64 = 1e-7;
         // The window's own rectangle: the surface may be refined over more (a margin).
         let region = Region::new(rect);
-        for leaf in leaves {
+        for (leaf, local) in leaves.iter().zip(&self.local) {
             let p = leaf.map(|v| mesh.pos(v));
             let u = p.map(DVec3::normalize);
             if !region.may_meet(&u) {
@@ -545,7 +546,7 @@ impl<'a> Surface<'a> {
                     for col in c0..=c1 {
                         let i = (row * cols + col) as usize;
                         if !owned[i] && inside(&n, dirs[i]) {
-                            (ground[i], water[i]) = sample(i, leaf, &n);
+                            (ground[i], water[i]) = sample(i, local, &n);
                             owned[i] = true;
                         }
                     }
@@ -564,8 +565,9 @@ impl<'a> Surface<'a> {
                     let n = planes(leaf);
                     n.iter().map(|m| d.dot(*m) / m.length().max(f64::MIN_POSITIVE)).fold(f64::INFINITY, f64::min)
                 };
-                if let Some(best) = leaves.iter().max_by(|a, b| score(a).total_cmp(&score(b))) {
-                    (ground[i], water[i]) = sample(i, best, &planes(best));
+                let best = leaves.iter().zip(&self.local).max_by(|a, b| score(a.0).total_cmp(&score(b.0)));
+                if let Some((leaf, local)) = best {
+                    (ground[i], water[i]) = sample(i, local, &planes(leaf));
                 }
             }
         }
@@ -584,23 +586,25 @@ impl Drop for Surface<'_> {
 /// Where and how a surface carves ([`carve_margin`]).
 #[derive(Clone, Copy, Debug)]
 struct Carve {
-    /// How far (m) past the rectangle the surface is refined and carved.
+    /// How far (m) past the rectangle the surface is refined, carved and flooded.
     margin: f64,
+    /// Whether a channel near it may flood it (`export/carve.rs`).
+    floods: bool,
     /// The widest channel's half width (m) near it, where channels too wide to flood the
     /// surface may carve it by their course (`tiles/course.rs`).
     course: Option<f64>,
 }
 
-/// How far (m) past `rect` a surface refined for cells of `cell` degrees must be refined and
-/// carved so that its cells' carving does not depend on where the refinement stops: twice the
-/// half width of the widest channel that may flood it ([`crate::export::carve`]) and four of
-/// the coarsest leaves; and whether wider channels may carve it by their course. `None` where
-/// no channel near it has a half width over the finest target edge: nothing can be carved
-/// there.
-fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Option<Carve> {
+/// How far (m) past `rect` a surface refined for cells of `cell` degrees must be refined,
+/// carved and flooded so that its cells do not depend on where the refinement stops: two of
+/// the widest leaves (a vertex's water level depends on the faces around it and its
+/// neighbours', `export/water.rs`), and twice the half width of the widest channel that may
+/// flood it ([`crate::export::carve`]); whether one may (not where no channel near it has a
+/// half width over the finest target edge), and whether wider channels may carve it by their
+/// course.
+fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: Rows) -> Carve {
     let params = tiles.params();
     let r = params.radius_m;
-    let channels = tiles.planet().mesh.channels.as_deref()?;
     // The leaves' targets (`Surface::refine`) at the rectangle's most polar and most
     // equatorial latitudes (a degree past each for the nodes and sources reaching past it).
     let (s, n) = (rect.south.clamp(-90.0, 90.0), rect.north.clamp(-90.0, 90.0));
@@ -608,6 +612,12 @@ fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: 
     let equatorial = if s <= 0.0 && n >= 0.0 { 0.0 } else { s.abs().min(n.abs()) };
     let target = |lat: f64| leaf_target(params, [dx, dy], rows, lat);
     let (finest, coarsest) = (target(polar + 1.0), target((equatorial - 1.0).max(0.0)));
+    // Two of the widest leaves: the faces around a leaf's corners, and around their
+    // neighbours, decide the corners' water levels. A leaf's edges are up to about twice its
+    // refinement edge, and no longer than the base mesh's longest.
+    let ring = 2.0 * (2.0 * LEAF_EDGE_CELLS * coarsest).min(tiles.faces().longest_edge() * r);
+    let dry = Carve { margin: ring, floods: false, course: None };
+    let Some(channels) = tiles.planet().mesh.channels.as_deref() else { return dry };
     // A channel carves where its half width is between the target at its vertex's latitude
     // and MAX_CARVE_EDGES of it (`Surface::refine`).
     let centre = crate::geo::direction(0.5 * (s + n), 0.5 * (rect.west + rect.east));
@@ -622,14 +632,13 @@ fn carve_margin(tiles: &PlanetTiles, rect: GeoBounds, [dx, dy]: [f64; 2], rows: 
     let small = crate::export::water::SMALL_STREAM_M;
     let half = 0.5 * f64::from(channels.widest_near(centre, near).max(small));
     if half <= finest {
-        return None;
+        return dry;
     }
     // Channels that flood are no wider than MAX_CARVE_EDGES coarsest targets.
     let cap = (2.0 * MAX_CARVE_EDGES * coarsest) as f32 * (1.0 + 1e-6);
     let flood = 0.5 * f64::from(channels.widest_near_under(centre, near, cap).max(small));
     let spread = if flood > finest { 2.0 * flood } else { 0.0 };
-    let margin = spread + 4.0 * LEAF_EDGE_CELLS * coarsest;
-    Some(Carve { margin, course: (half > MAX_CARVE_EDGES * finest).then_some(half) })
+    Carve { margin: spread + ring, floods: true, course: (half > MAX_CARVE_EDGES * finest).then_some(half) }
 }
 
 /// The edge (m) a surface refined for cells of `cell` degrees whose rows divide latitudes as

@@ -71,9 +71,11 @@ fn the_cog_holds_ground_and_water_bands_georeferenced() {
 fn finer_grids_refine_and_agree_with_the_base_mesh_on_it() {
     let t = tiles();
     let bbox = coast_bbox();
-    // 10° cells: coarser than the base mesh's edges (~500 km), so no split below it.
+    // 10° cells: coarser than the base mesh's edges (~500 km), so no split below it but a few
+    // in the ring of leaves refined past the bbox for the water (22: nodes reaching 60°N and
+    // S, where cells narrow, in a ring two of the base mesh's longest edges wide).
     let coarse = super::sample_dem(t, &DemRequest::new(&bbox, 4, Some(3), DEFAULT_MAX_DEM_PIXELS).unwrap());
-    assert_eq!(coarse.splits, 0);
+    assert!(coarse.splits < 100, "{}", coarse.splits);
     let fine = super::sample_dem(t, &DemRequest::new(&bbox, 1000, Some(750), DEFAULT_MAX_DEM_PIXELS).unwrap());
     assert!(fine.splits > 100_000, "{}", fine.splits);
     // Cells coarser than the base mesh sample the base mesh as the elevation raster does.
@@ -171,6 +173,66 @@ fn wet_runs(wet: &[bool], w: usize, h: usize, columns: bool) -> Vec<usize> {
         .collect()
 }
 
+/// The direction of the base mesh's river vertex with the widest channel away from the sea,
+/// and the channel's width (m).
+fn widest_inland_river(t: &PlanetTiles) -> (DVec3, f64) {
+    use crate::export::water::channel_width;
+    let base = &t.planet().mesh;
+    let sea = t.params().sea_level_m;
+    base.vertices
+        .iter()
+        .filter(|v| v.ground > sea + 20.0)
+        .filter_map(|v| Some((v.p(), channel_width(base, v)?)))
+        .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a })
+}
+
+/// Land cells (ground over 5 m) with water, and land cells, of a DEM.
+fn wet_land(dem: &Dem) -> (usize, usize) {
+    let land = dem.ground.iter().filter(|&&g| g > 5.0).count();
+    (dem.ground.iter().zip(&dem.water).filter(|(g, w)| **g > 5.0 && !w.is_nan()).count(), land)
+}
+
+/// Water on land stands in rivers' channels at their width, as views draw it: around the test
+/// planet's widest river away from the sea, on cells as wide as its channel, the river shows
+/// as water along its course and the land beside it stays dry.
+#[test]
+fn a_river_as_wide_as_the_cells_shows_along_its_course() {
+    let t = tiles();
+    let (dir, width) = widest_inland_river(t);
+    let (lat, lon) = lat_lon(dir);
+    let cell = (width / t.params().radius_m).to_degrees();
+    let (w, h) = (300.0, 200.0);
+    let bbox =
+        format!("{},{},{},{}", lon - 0.5 * w * cell, lat - 0.5 * h * cell, lon + 0.5 * w * cell, lat + 0.5 * h * cell);
+    let req = DemRequest::new(&bbox, w as u32, Some(h as u32), DEFAULT_MAX_DEM_PIXELS).unwrap();
+    let dem = super::sample_dem(t, &req);
+    let (wet, land) = wet_land(&dem);
+    let share = wet as f64 / land as f64;
+    eprintln!("{wet} of {land} land cells wet ({:.2} %), channel {width:.0} m", share * 100.0);
+    assert!(land > 10_000, "{land} land cells");
+    // The river crosses the grid: at least a cell of water per column it spans...
+    assert!(wet >= 100, "{wet} wet cells");
+    // ... and the land beside it stays dry.
+    assert!(share < 0.03, "{:.2} % of the land is water", share * 100.0);
+}
+
+/// A DEM of a regional map at the map's own 90 m is dry beside its streams (10-60 m wide,
+/// under an eighth of the cells' edges): every inland vertex of the map's base mesh is a river
+/// vertex with its water at the map, and each face beside one used to flood to its level
+/// (45.7 % of the land cells were water; now 7 of 138,632).
+#[test]
+fn a_regional_dem_is_dry_beside_its_streams() {
+    let Some(planet) = crate::planet::tests_relief::jacksboro() else { return };
+    let tiles = PlanetTiles::new(Arc::new(planet.clone()), Params::default()).unwrap();
+    let bbox = "-84.41375,36.44625,-84.07791666666667,36.73291666666667";
+    let req = DemRequest::new(bbox, 403, Some(344), DEFAULT_MAX_DEM_PIXELS).unwrap();
+    let dem = super::sample_dem(&tiles, &req);
+    let (wet, land) = wet_land(&dem);
+    eprintln!("{wet} of {land} land cells wet");
+    assert!(land > 130_000, "{land} land cells");
+    assert!(wet * 100 < land, "{wet} of {land} land cells are water");
+}
+
 #[test]
 fn dems_carve_wide_rivers_to_their_width_whatever_their_blocks() {
     // Cells a tenth of the channel (its half width 5 target edges): the DEM floods its own
@@ -192,16 +254,8 @@ fn dems_far_finer_than_a_wide_river_carve_it_by_its_course() {
 /// and half way down: its water is as wide as its channel, and a `window` (first and last
 /// columns and rows) across the blocks' border has the same cells.
 fn carves_to_width(per_width: f64, (cols, rows): (u32, u32), (c0, r0, c1, r1): (u32, u32, u32, u32)) {
-    use crate::export::water::channel_width;
     let t = tiles();
-    let base = &t.planet().mesh;
-    let sea = t.params().sea_level_m;
-    let (dir, width) = base
-        .vertices
-        .iter()
-        .filter(|v| v.ground > sea + 20.0)
-        .filter_map(|v| Some((v.p(), channel_width(base, v)?)))
-        .fold((DVec3::ZERO, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+    let (dir, width) = widest_inland_river(t);
     let (lat, lon) = lat_lon(dir);
     let cell = (width / per_width / t.params().radius_m).to_degrees();
     let (w0, n0) = (lon - 512.0 * cell, lat + f64::from(rows / 2) * cell);

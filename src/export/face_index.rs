@@ -24,6 +24,8 @@ pub struct FaceIndex {
     faces: Vec<u32>,
     /// Faces of the indexed mesh (faces at or past this index are a refinement's).
     base_faces: usize,
+    /// The longest edge of its faces, as a chord of the unit sphere.
+    longest: f64,
 }
 
 impl FaceIndex {
@@ -35,11 +37,13 @@ impl FaceIndex {
         let rows = ((180.0 / (2.0 * edge)).floor() as usize).clamp(1, 720);
         let (cell, cols) = (180.0 / rows as f64, 2 * rows);
         let mut pairs: Vec<(u32, u32)> = Vec::new();
+        let mut longest_edge = 0f64;
         for f in 0..mesh.faces.len() {
             let u = mesh.corners(f as u32).map(|v| mesh.pos(v).normalize());
             let nrm = [u[1].cross(u[2]), u[2].cross(u[0]), u[0].cross(u[1])];
             let (lo, hi, lon) = triangle_bounds(u, &nrm);
             let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            longest_edge = longest_edge.max(longest);
             let pad = DESCENDANT_REACH * longest.to_degrees();
             let row = |lat: f64| (((90.0 - lat) / cell).floor().max(0.0) as usize).min(rows - 1);
             let (r0, r1) = (row(hi + pad), row(lo - pad));
@@ -71,7 +75,12 @@ impl FaceIndex {
             start[k + 1] += start[k];
         }
         let faces = pairs.into_iter().map(|(_, f)| f).collect();
-        FaceIndex { cell, rows, cols, start, faces, base_faces: mesh.faces.len() }
+        FaceIndex { cell, rows, cols, start, faces, base_faces: mesh.faces.len(), longest: longest_edge }
+    }
+
+    /// The longest edge of the indexed mesh's faces, as a chord of the unit sphere.
+    pub fn longest_edge(&self) -> f64 {
+        self.longest
     }
 
     /// Bytes held.

@@ -7,7 +7,7 @@
 //! **Surface.** A tile is a regular grid of [`GRID`] x [`GRID`] cells whose vertices are sampled
 //! from the planet refined to the cell size with the same reproducible split as views, tiles and
 //! `dem.tif` (`dem.rs`): the visible surface, i.e. the water where water stands (sea, lakes,
-//! rivers wide enough for the grid) and the ground elsewhere, in metres above sea level, which
+//! rivers' channels at their width) and the ground elsewhere, in metres above sea level, which
 //! Cesium puts on its ellipsoid. Where the sea is, the water mask says so and Cesium draws its
 //! water there; the sea floor is in `dem.tif` and the elevation tiles.
 //!

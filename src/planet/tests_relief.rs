@@ -26,7 +26,7 @@ pub(crate) fn earth() -> Option<&'static Planet> {
 }
 
 /// The planet of the shipped Jacksboro DEM (~90 m, land to its edges), built once.
-fn jacksboro() -> Option<&'static Planet> {
+pub(crate) fn jacksboro() -> Option<&'static Planet> {
     static JACKSBORO: std::sync::OnceLock<Option<Planet>> = std::sync::OnceLock::new();
     JACKSBORO.get_or_init(|| from_map("maps/region_jacksboro_tn_403x344.tif")).as_ref()
 }

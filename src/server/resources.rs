@@ -237,9 +237,10 @@ fn render(
 /// map pixels' floor; 24: under an elevation map, riverbanks give way where the map shows
 /// lower ground; 25: an elevation map's base mesh at the map (rivers' water at it, mountain
 /// vertices at its means, banks giving way), plateaus' roughness with the square of their
-/// altitude, the floor fading beyond hillslopes), so that caches holding the old bytes under
-/// a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "25";
+/// altitude, the floor fading beyond hillslopes; 26: DEMs' and elevation tiles' water at the
+/// rivers' channel widths, as views draw it), so that caches holding the old bytes under a
+/// strong, immutable `ETag` see a new one.
+pub const ANSWERS_REVISION: &str = "26";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -44,7 +44,7 @@ pub(crate) use course::wide_course;
 pub use files::WriteStats;
 pub use key::{KeyError, TileFile, TileKey};
 pub use tileset::{is_subtree_root, TilesetFile};
-pub(crate) use tree::leaf_vertices;
+pub(crate) use tree::leaf_vertices_from;
 pub use tree::{BaseTree, NotBisected, Refiner, ROOTS};
 
 use crate::export::glb::Compression;

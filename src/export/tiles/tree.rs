@@ -266,18 +266,32 @@ pub(crate) fn surface_mesh(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<u32>)
 /// as triangles over them, and each vertex's index in `mesh`: enough to carve channels
 /// (`export/carve.rs`) without the cost of a mesh's edges.
 pub(crate) fn leaf_vertices(mesh: &Mesh, leaves: &[[u32; 3]]) -> (Mesh, Vec<[u32; 3]>, Vec<u32>) {
-    let mut slot: HashMap<u32, u32> = HashMap::with_capacity_and_hasher(leaves.len(), Default::default());
-    let mut vertices = Vec::new();
-    let mut ids = Vec::new();
+    leaf_vertices_from(mesh, leaves, mesh.vertices.len())
+}
+
+/// [`leaf_vertices`], finding the vertices from `dense` on (a refinement's, most of the leaves'
+/// corners) in a table instead of a map: the same result, faster for many leaves.
+pub(crate) fn leaf_vertices_from(mesh: &Mesh, leaves: &[[u32; 3]], dense: usize) -> (Mesh, Vec<[u32; 3]>, Vec<u32>) {
+    let mut slot: HashMap<u32, u32> = HashMap::default();
+    let mut table = vec![u32::MAX; mesh.vertices.len().saturating_sub(dense)];
+    let mut vertices = Vec::with_capacity(leaves.len() / 2 + 16);
+    let mut ids = Vec::with_capacity(leaves.len() / 2 + 16);
+    let mut add = |v: u32| {
+        vertices.push(mesh.vertices[v as usize]);
+        ids.push(v);
+        vertices.len() as u32 - 1
+    };
     let triangles: Vec<[u32; 3]> = leaves
         .iter()
         .map(|leaf| {
-            leaf.map(|v| {
-                *slot.entry(v).or_insert_with(|| {
-                    vertices.push(mesh.vertices[v as usize]);
-                    ids.push(v);
-                    vertices.len() as u32 - 1
-                })
+            leaf.map(|v| match (v as usize).checked_sub(dense) {
+                Some(i) => {
+                    if table[i] == u32::MAX {
+                        table[i] = add(v);
+                    }
+                    table[i]
+                }
+                None => *slot.entry(v).or_insert_with(|| add(v)),
             })
         })
         .collect();
