@@ -94,9 +94,10 @@ map.on('idle', () => { window.idle = true; });
     const viewer = new Cesium.Viewer('c', { terrainProvider, baseLayer: false, baseLayerPicker: false,
       ${cesiumQuiet} });
     viewer.scene.globe.baseColor = Cesium.Color.fromCssColorString('#b8a888');
-    // Midday over the Himalaya, so that the normals' shading shows the relief.
+    // Morning over the Himalaya (the sun 24° high in the east), so that the normals' shading shows
+    // the relief: a midday sun lights the slopes almost alike.
     viewer.clock.shouldAnimate = false;
-    viewer.clock.currentTime = Cesium.JulianDate.fromIso8601('2026-03-20T06:00:00Z');
+    viewer.clock.currentTime = Cesium.JulianDate.fromIso8601('2026-03-20T02:00:00Z');
     viewer.scene.globe.enableLighting = true;
     viewer.scene.globe.showWaterEffect = true;
     viewer.camera.setView({ destination: Cesium.Cartesian3.fromDegrees(86.9, 25.5, 250000),
