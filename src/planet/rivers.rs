@@ -35,6 +35,9 @@ pub struct RiverReport {
     /// Relief maps: depressions kept as lakes and depressions breached (see [`super::relief`]).
     pub lakes: usize,
     pub breached: usize,
+    /// Relief maps: river vertices drained to a lower neighbour instead of the one the flood
+    /// reached them from, which stood higher on the map.
+    pub downhill_rerouted: usize,
     /// Relief maps: depressions with no outlet to the sea (see [`super::basins`]).
     pub endorheic: usize,
     /// Relief maps: lake per vertex (`NONE` off lakes) and each lake's level and outlet.
@@ -216,6 +219,39 @@ pub fn build_rivers(
         }
     }
 
+    // --- On a relief map: no river edge uphill where a lower way out exists ---
+    // The flood is ordered by the lowest ground around each vertex and a vertex takes two
+    // tributaries, so a valley's water is often drained through a vertex on the valley's side
+    // (a fifth of Jacksboro's river edges ran uphill on the map, one in twenty by over 25 m);
+    // the levels below would then carve that vertex down to the valley, a trench across the
+    // spur. A vertex whose downstream stands higher on the map than itself drains instead to
+    // its lowest neighbour, by the map at the vertex, among those flooded before it that still
+    // take a tributary, when that one is lower: the order stays downstream first.
+    if relief.is_some() {
+        let mut rank = vec![u32::MAX; n];
+        for (i, &v) in order.iter().enumerate() {
+            rank[v as usize] = i as u32;
+        }
+        let h = |v: u32| if coast[v as usize] { 0.0 } else { elevation[v as usize].unwrap_or(0.0) };
+        for (i, &v) in order.iter().enumerate() {
+            let u = downstream[v as usize];
+            if h(u) <= h(v) {
+                continue;
+            }
+            let lowest = adj
+                .around(v)
+                .filter(|&(w, _)| w != u && (coast[w as usize] || rank[w as usize] < i as u32))
+                .filter(|&(w, _)| has_room(w as usize, &tributaries))
+                .min_by(|x, y| h(x.0).total_cmp(&h(y.0)).then(x.0.cmp(&y.0)));
+            if let Some((w, we)) = lowest.filter(|&(w, _)| h(w) < h(u)) {
+                tributaries[u as usize] = tributaries[u as usize].saturating_sub(1);
+                tributaries[w as usize] = tributaries[w as usize].saturating_add(1);
+                downstream[v as usize] = w;
+                down_edge[v as usize] = we;
+                report.downhill_rerouted += 1;
+            }
+        }
+    }
     // --- Levels on a relief map: depressions breached, kept as lakes or closed ---
     let p = params;
     let mut sinks: Vec<u32> = Vec::new();

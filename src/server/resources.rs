@@ -240,7 +240,7 @@ fn render(
 /// altitude, the floor fading beyond hillslopes; 26: DEMs' and elevation tiles' water at the
 /// rivers' channel widths, as views draw it), so that caches holding the old bytes under a
 /// strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "26";
+pub const ANSWERS_REVISION: &str = "27";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.
