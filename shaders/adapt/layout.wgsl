@@ -108,6 +108,7 @@ struct SplitParams {
     ridge: f64,
     floor_fade: f64,
     altitude_length: f64,
+    sea_detail: f64,
     // Slots where the new vertices, edges and faces start.
     vertices: u32,
     edges: u32,

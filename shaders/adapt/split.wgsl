@@ -342,13 +342,20 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     let len = distance3(pos(s.a), pos(s.b));
     if kind == KIND_SEA {
         // As on the CPU: the elevation map's sea floor where it resolves the split edge.
+        // Below the map's pixel, the landform's detail at `sea_detail` of the land's
+        // (`sea_floor_ground`); off the map, the paper's rule.
+        let dir = normalize3(at);
         var mapped = Guided(false, 0.0lf);
-        if len >= p.guide_min_edge && p.guide_faces > 0u {
-            mapped = guide_at(normalize3(at));
+        if p.guide_faces > 0u {
+            mapped = guide_at(dir);
         }
         var g: f64;
-        if mapped.found {
+        if mapped.found && len >= p.guide_min_edge {
             g = sea + mapped.metres;
+        } else if mapped.found {
+            let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
+            let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
+            g = parts.mean + p.sea_detail * (parts.ridge + parts.offset);
         } else {
             g = mid_ground + (xi - p.half) * sea_roughness(len);
         }
@@ -407,9 +414,21 @@ fn least_steep(g: array<f64, 4>, l: array<f64, 4>) -> f64 {
     return best;
 }
 
-// `landform_range` and `landform_ground` (`src/mesh/split/landform.rs`): the diamond's mean,
-// its ridge term and the landform's random offset; `g` is the ground at `[a, t, b, d]`.
+// `landform_ground` (`src/mesh/split/landform.rs`).
 fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, map_pixel: f64) -> f64 {
+    let parts = landform_parts(g, edge_len, seed, map_relief, map_pixel);
+    return (parts.mean + parts.ridge) + parts.offset;
+}
+
+struct LandformParts {
+    mean: f64,
+    ridge: f64,
+    offset: f64,
+}
+
+// `landform_range` and `landform_parts` (`src/mesh/split/landform.rs`): the diamond's mean,
+// its ridge term and the landform's random offset; `g` is the ground at `[a, t, b, d]`.
+fn landform_parts(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, map_pixel: f64) -> LandformParts {
     let a = g[0];
     let t = g[1];
     let b = g[2];
@@ -437,7 +456,7 @@ fn landform_ground(g: array<f64, 4>, edge_len: f64, seed: u32, map_relief: f64, 
     let range = (floor + relief + mapped) * threshold / (p.one + edge_len / p.relief_length) * fade;
     let ridge = (a + b) * p.half - (t + d) * p.half;
     let n = unit(seed, SALT_ALTITUDE) + unit(seed, SALT_DETAIL) - p.one;
-    return mean + p.ridge * threshold * ridge + range * p.half * n;
+    return LandformParts(mean, p.ridge * threshold * ridge, range * p.half * n);
 }
 
 // `continent_vertex`: midpoint displacement within eq. 11-12 (the landform's detail), or a new

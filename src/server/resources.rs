@@ -238,9 +238,10 @@ fn render(
 /// lower ground; 25: an elevation map's base mesh at the map (rivers' water at it, mountain
 /// vertices at its means, banks giving way), plateaus' roughness with the square of their
 /// altitude, the floor fading beyond hillslopes; 26: DEMs' and elevation tiles' water at the
-/// rivers' channel widths, as views draw it), so that caches holding the old bytes under a
+/// rivers' channel widths, as views draw it; 27: rivers on elevation maps no longer draining
+/// uphill; 28: the sea floor's detail below an elevation map's pixel by its landform), so that caches holding the old bytes under a
 /// strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "27";
+pub const ANSWERS_REVISION: &str = "28";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

@@ -63,6 +63,7 @@ impl SplitParams {
             ridge: landform::RIDGE,
             floor_fade: landform::FLOOR_FADE,
             altitude_length: landform::ALTITUDE_LENGTH,
+            sea_detail: landform::SEA_DETAIL,
             vertices: lens.0 as u32,
             edges: lens.1 as u32,
             faces: lens.2 as u32,

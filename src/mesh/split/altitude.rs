@@ -5,7 +5,7 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
-use super::landform::landform_ground;
+use super::landform::{landform_ground, sea_floor_ground};
 use super::position::{
     altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
     weighted_position, well_shaped_towards,
@@ -113,8 +113,18 @@ pub fn wet_vertex(
     let (ground, water, flags) = match edge.kind {
         EdgeKind::Sea => {
             let len = d.edge_length();
-            let g = match guide.filter(|g| len >= g.min_edge_m).and_then(|g| g.at(pos.normalize())) {
-                Some(m) => sea + m,
+            let dir = pos.normalize();
+            let g = match guide.and_then(|g| g.at(dir).map(|m| (g, m))) {
+                // The map resolves the split edge: its sea floor.
+                Some((g, m)) if len >= g.min_edge_m => sea + m,
+                // Below the map's pixel, the sea floor's detail follows its landform as the
+                // land's does: shelves and abyssal plains stay flat, continental slopes,
+                // ridges and trenches rough (the paper's 2 % of the edge everywhere put tens
+                // of metres of relief on flat shelves the map shows a few metres deep).
+                Some((g, _)) => {
+                    let corners = [va, d.t(), vb, d.d()].map(|v| v.ground);
+                    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m])
+                }
                 None => mid_ground + (xi - 0.5) * sea_roughness(len),
             };
             (g.min(sea - 1.0), sea, VertexFlags::empty())
@@ -339,6 +349,54 @@ mod tests {
         let high = flat_map(&p, 1_200.0);
         let (v, _) = split_vertex(&d, &p, Some(&high));
         assert!(v.ground >= bank(&v) - 1e-9, "{} under the bank {}", v.ground, bank(&v));
+    }
+
+    /// The sea split of a diamond ~7 km across at (0°, 0°) whose corners stand at the sea floor
+    /// `floor` metres below sea level, `[a, t, b, d]`, under `guide`, for vertex seed `seed`.
+    fn sea_split(p: &Params, floor: [f64; 4], guide: Option<&Guide>, seed: u32) -> f64 {
+        let r = p.radius_m;
+        let at = |lat: f64, lon: f64, depth: f64| {
+            let ground = p.sea_level_m - depth;
+            let mut v = Vertex::new(direction(lat, lon) * (r + ground), seed);
+            v.ground = ground;
+            v.water = p.sea_level_m;
+            v
+        };
+        let d = Diamond {
+            site: SplitSite { edge: 0, a: 0, b: 1, t: 2, d: 3, f1: 0, f2: 1 },
+            edge: Edge { v: [0, 1], f: [0, 1], lod: Lod::default(), level: 0, kind: EdgeKind::Sea, land: 0 },
+            faces: [Face { e: [0, 1, 2] }, Face { e: [0, 3, 4] }],
+            corners: [
+                at(0.0, -0.03, floor[0]),
+                at(0.0, 0.03, floor[2]),
+                at(0.03, 0.0, floor[1]),
+                at(-0.03, 0.0, floor[3]),
+            ],
+            radius: r,
+        };
+        split_vertex(&d, p, guide).0.ground - p.sea_level_m
+    }
+
+    #[test]
+    fn a_shelf_below_the_maps_pixel_stays_flat_and_a_slope_rough() {
+        let p = Params::earth();
+        let spread = |floor: [f64; 4], guide: Option<&Guide>| {
+            let g: Vec<f64> = (0..200).map(|seed| sea_split(&p, floor, guide, seed)).collect();
+            let lo = g.iter().copied().fold(f64::MAX, f64::min);
+            (lo, g.iter().copied().fold(f64::MIN, f64::max) - lo)
+        };
+        // A shelf 60 m deep that the map (0.1° pixels, 11 km) shows flat: the sea floor keeps
+        // within a few metres of it (the paper's rule spreads 2 % of the 6.7 km edge, ~130 m).
+        let shelf = flat_map(&p, -60.0);
+        let (_, flat) = spread([60.0; 4], Some(&shelf));
+        assert!(flat < 5.0, "a flat shelf spreads {flat} m");
+        let (_, paper) = spread([60.0; 4], None);
+        assert!(paper > 100.0, "off the map, the paper's rule: {paper} m");
+        // A continental slope falling 1,000 m across the diamond gains relief, at most
+        // `SEA_DETAIL` of what land of that relief would, and stays under the sea.
+        let (deepest, steep) = spread([500.0, 1_000.0, 1_500.0, 1_000.0], Some(&shelf));
+        assert!(steep > 20.0 * flat.max(1.0), "a slope spreads {steep} m against the shelf's {flat} m");
+        assert!(deepest > -1_600.0, "{deepest}");
     }
 
     #[test]
