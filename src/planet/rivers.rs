@@ -38,6 +38,8 @@ pub struct RiverReport {
     /// Relief maps: river vertices drained to a lower neighbour instead of the one the flood
     /// reached them from, which stood higher on the map.
     pub downhill_rerouted: usize,
+    /// Of those, vertices that became a third tributary (every lower way out took two).
+    pub third_tributaries: usize,
     /// Relief maps: depressions with no outlet to the sea (see [`super::basins`]).
     pub endorheic: usize,
     /// Relief maps: lake per vertex (`NONE` off lakes) and each lake's level and outlet.
@@ -238,12 +240,19 @@ pub fn build_rivers(
             if h(u) <= h(v) {
                 continue;
             }
-            let lowest = adj
-                .around(v)
-                .filter(|&(w, _)| w != u && (coast[w as usize] || rank[w as usize] < i as u32))
-                .filter(|&(w, _)| has_room(w as usize, &tributaries))
-                .min_by(|x, y| h(x.0).total_cmp(&h(y.0)).then(x.0.cmp(&y.0)));
-            if let Some((w, we)) = lowest.filter(|&(w, _)| h(w) < h(u)) {
+            let lowest = |room: &dyn Fn(usize) -> bool| {
+                adj.around(v)
+                    .filter(|&(w, _)| w != u && (coast[w as usize] || rank[w as usize] < i as u32))
+                    .filter(|&(w, _)| room(w as usize))
+                    .min_by(|x, y| h(x.0).total_cmp(&h(y.0)).then(x.0.cmp(&y.0)))
+                    .filter(|&(w, _)| h(w) < h(u))
+            };
+            // Where every lower way out already takes two, a third tributary (the paper avoids
+            // merging more than two rivers "if possible"; draining uphill is not an
+            // alternative a river has). A coast vertex keeps its one river: a mouth.
+            let two = lowest(&|w| has_room(w, &tributaries));
+            let three = || lowest(&|w| !coast[w] && tributaries[w] < 3);
+            if let Some((w, we)) = two.or_else(|| three().inspect(|_| report.third_tributaries += 1)) {
                 tributaries[u as usize] = tributaries[u as usize].saturating_sub(1);
                 tributaries[w as usize] = tributaries[w as usize].saturating_add(1);
                 downstream[v as usize] = w;

@@ -239,9 +239,10 @@ fn render(
 /// vertices at its means, banks giving way), plateaus' roughness with the square of their
 /// altitude, the floor fading beyond hillslopes; 26: DEMs' and elevation tiles' water at the
 /// rivers' channel widths, as views draw it; 27: rivers on elevation maps no longer draining
-/// uphill; 28: the sea floor's detail below an elevation map's pixel by its landform), so that caches holding the old bytes under a
+/// uphill; 28: the sea floor's detail below an elevation map's pixel by its landform; 29: a
+/// third tributary where every lower way out took two), so that caches holding the old bytes under a
 /// strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "28";
+pub const ANSWERS_REVISION: &str = "29";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.
