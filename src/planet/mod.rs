@@ -4,6 +4,7 @@ pub mod basins;
 pub mod belts;
 pub mod climate;
 pub mod continents;
+pub mod downhill;
 pub mod fidelity;
 pub mod lakes;
 pub mod network;

@@ -191,23 +191,7 @@ impl RiverGraph {
             }
         }
         violations += river_edges.saturating_sub(used);
-        let mut up_offsets = vec![0u32; n + 1];
-        for &d in &downstream {
-            if d != NONE {
-                up_offsets[d as usize + 1] += 1;
-            }
-        }
-        for i in 0..n {
-            up_offsets[i + 1] += up_offsets[i];
-        }
-        let mut fill = up_offsets.clone();
-        let mut up = vec![0u32; up_offsets[n] as usize];
-        for (v, &d) in downstream.iter().enumerate() {
-            if d != NONE {
-                up[fill[d as usize] as usize] = v as u32;
-                fill[d as usize] += 1;
-            }
-        }
+        let (up_offsets, up) = upstream_lists(&downstream);
         let mut order: Vec<u32> =
             (0..n as u32).filter(|&v| mesh.vertices[v as usize].flags.contains(VertexFlags::RIVER)).collect();
         order.sort_by(|&a, &b| {
@@ -421,6 +405,30 @@ impl RiverGraph {
             })
             .collect()
     }
+}
+
+/// Each vertex's upstream neighbours (those whose `downstream` it is), as the list of all of
+/// them and each vertex's offsets into it (`offsets[v]..offsets[v + 1]`), in vertex order.
+pub fn upstream_lists(downstream: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let n = downstream.len();
+    let mut offsets = vec![0u32; n + 1];
+    for &d in downstream {
+        if d != NONE {
+            offsets[d as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        offsets[i + 1] += offsets[i];
+    }
+    let mut fill = offsets.clone();
+    let mut up = vec![0u32; offsets[n] as usize];
+    for (v, &d) in downstream.iter().enumerate() {
+        if d != NONE {
+            up[fill[d as usize] as usize] = v as u32;
+            fill[d as usize] += 1;
+        }
+    }
+    (offsets, up)
 }
 
 #[cfg(test)]

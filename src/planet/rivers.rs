@@ -36,10 +36,8 @@ pub struct RiverReport {
     pub lakes: usize,
     pub breached: usize,
     /// Relief maps: river vertices drained to a lower neighbour instead of the one the flood
-    /// reached them from, which stood higher on the map.
-    pub downhill_rerouted: usize,
-    /// Of those, vertices that became a third tributary (every lower way out took two).
-    pub third_tributaries: usize,
+    /// reached them from, which stood higher on the map (`super::downhill`).
+    pub downhill: super::downhill::Drained,
     /// Relief maps: depressions with no outlet to the sea (see [`super::basins`]).
     pub endorheic: usize,
     /// Relief maps: lake per vertex (`NONE` off lakes) and each lake's level and outlet.
@@ -222,44 +220,15 @@ pub fn build_rivers(
     }
 
     // --- On a relief map: no river edge uphill where a lower way out exists ---
-    // The flood is ordered by the lowest ground around each vertex and a vertex takes two
-    // tributaries, so a valley's water is often drained through a vertex on the valley's side
-    // (a fifth of Jacksboro's river edges ran uphill on the map, one in twenty by over 25 m);
-    // the levels below would then carve that vertex down to the valley, a trench across the
-    // spur. A vertex whose downstream stands higher on the map than itself drains instead to
-    // its lowest neighbour, by the map at the vertex, among those flooded before it that still
-    // take a tributary, when that one is lower: the order stays downstream first.
     if relief.is_some() {
-        let mut rank = vec![u32::MAX; n];
-        for (i, &v) in order.iter().enumerate() {
-            rank[v as usize] = i as u32;
-        }
         let h = |v: u32| if coast[v as usize] { 0.0 } else { elevation[v as usize].unwrap_or(0.0) };
-        for (i, &v) in order.iter().enumerate() {
-            let u = downstream[v as usize];
-            if h(u) <= h(v) {
-                continue;
-            }
-            let lowest = |room: &dyn Fn(usize) -> bool| {
-                adj.around(v)
-                    .filter(|&(w, _)| w != u && (coast[w as usize] || rank[w as usize] < i as u32))
-                    .filter(|&(w, _)| room(w as usize))
-                    .min_by(|x, y| h(x.0).total_cmp(&h(y.0)).then(x.0.cmp(&y.0)))
-                    .filter(|&(w, _)| h(w) < h(u))
-            };
-            // Where every lower way out already takes two, a third tributary (the paper avoids
-            // merging more than two rivers "if possible"; draining uphill is not an
-            // alternative a river has). A coast vertex keeps its one river: a mouth.
-            let two = lowest(&|w| has_room(w, &tributaries));
-            let three = || lowest(&|w| !coast[w] && tributaries[w] < 3);
-            if let Some((w, we)) = two.or_else(|| three().inspect(|_| report.third_tributaries += 1)) {
-                tributaries[u as usize] = tributaries[u as usize].saturating_sub(1);
-                tributaries[w as usize] = tributaries[w as usize].saturating_add(1);
-                downstream[v as usize] = w;
-                down_edge[v as usize] = we;
-                report.downhill_rerouted += 1;
-            }
-        }
+        let tree = super::downhill::Tree {
+            downstream: &mut downstream,
+            down_edge: &mut down_edge,
+            tributaries: &mut tributaries,
+            order: &mut order,
+        };
+        report.downhill = super::downhill::drain_downhill(&adj, &coast, &h, tree);
     }
     // --- Levels on a relief map: depressions breached, kept as lakes or closed ---
     let p = params;

@@ -544,8 +544,9 @@ fn a_regional_map_keeps_its_heights_to_its_edges() {
 /// above its upstream end on the map is carved into a trench across a spur. Jacksboro's base
 /// mesh (seed 42): 12.8 % of the river edges on the map rose on it (0.2 % by over 25 m) before
 /// each such vertex drained to a lower neighbour where it could, 10.0 % (0.1 %) after, 7.7 %
-/// (under 0.05 %) with a third tributary where every lower way out took two; on the map's 4x
-/// average, 21.7 % (4.9 %) before (`docs/realism.md`).
+/// (under 0.05 %) with a third tributary where every lower way out took two, 7.3 % with
+/// neighbours the flood reached later too; on the map's 4x average, 21.7 % (4.9 %) before
+/// (`docs/realism.md`).
 #[test]
 fn rivers_on_a_regional_dem_seldom_flow_uphill_on_the_map() {
     let Some(planet) = jacksboro() else { return };
@@ -568,7 +569,7 @@ fn rivers_on_a_regional_dem_seldom_flow_uphill_on_the_map() {
     eprintln!("{edges} river edges on the map: {:.1} % uphill, {:.1} % by over 25 m", 100.0 * uphill, 100.0 * steep);
     assert!(edges > 5_000, "{edges} river edges on the map");
     assert!(steep < 0.0005, "{:.2} % of river edges rise over 25 m on the map", 100.0 * steep);
-    assert!(uphill < 0.085, "{:.1} % of river edges rise on the map", 100.0 * uphill);
+    assert!(uphill < 0.08, "{:.1} % of river edges rise on the map", 100.0 * uphill);
 }
 
 /// Below the map's pixel the detail follows the landform: on the Earth DEM (~39 km pixels), a
