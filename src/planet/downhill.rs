@@ -72,7 +72,7 @@ pub fn drain_downhill(adj: &Adjacency, coast: &[bool], h: &dyn Fn(u32) -> f64, t
             }
             true
         };
-        let lowest = |among: &dyn Fn(u32) -> bool, room: &dyn Fn(usize) -> bool, downstream: &[u32]| {
+        let lowest = |among: Among, room: Room, downstream: &[u32]| {
             let mut ways: Vec<(u32, u32)> =
                 adj.around(v).filter(|&(w, _)| w != u && among(w) && room(w as usize) && h(w) < h(u)).collect();
             ways.sort_by(|x, y| h(x.0).total_cmp(&h(y.0)).then(x.0.cmp(&y.0)));
