@@ -170,6 +170,25 @@ fn guide_dot(a: vec3<f64>, b: vec3<f64>) -> f64 {
     return (a.x * b.x + a.y * b.y) + a.z * b.z;
 }
 
+// `Guide::face_of`: the guide face whose centre `d` is nearest, and `d`'s dot product with it.
+struct GuideFaceAt {
+    index: u32,
+    k: f64,
+}
+
+fn guide_face(d: vec3<f64>) -> GuideFaceAt {
+    var best = 0u;
+    var best_k = -F64_MAX;
+    for (var i = 0u; i < p.guide_faces; i++) {
+        let k = guide_dot(guide_faces[i].centre, d);
+        if k > best_k {
+            best_k = k;
+            best = i;
+        }
+    }
+    return GuideFaceAt(best, best_k);
+}
+
 // The cell of the guide's grid under unit direction `d` (`Guide::cell`): the index of the
 // lower corner of the four cells `guide_at` interpolates between, and the fractions.
 struct GuideCell {
@@ -180,15 +199,9 @@ struct GuideCell {
 }
 
 fn guide_cell(d: vec3<f64>) -> GuideCell {
-    var best = 0u;
-    var best_k = -F64_MAX;
-    for (var i = 0u; i < p.guide_faces; i++) {
-        let k = guide_dot(guide_faces[i].centre, d);
-        if k > best_k {
-            best_k = k;
-            best = i;
-        }
-    }
+    let nearest = guide_face(d);
+    let best = nearest.index;
+    let best_k = nearest.k;
     if p.guide_faces == 0u || best_k <= 0.0lf {
         return GuideCell(false, 0u, 0.0lf, 0.0lf);
     }
@@ -246,6 +259,71 @@ fn guide_twist(d: vec3<f64>) -> f64 {
         return 0.0lf;
     }
     return abs((q.v00 + q.v11) - (q.v10 + q.v01));
+}
+
+// `catmull_rom` (`src/mesh/guide.rs`): the Catmull-Rom cubic through `p1` (at 0) and `p2` (at 1).
+fn catmull_rom(p0: f64, p1: f64, p2: f64, p3: f64, t: f64) -> f64 {
+    let a = p2 - p0;
+    let b = (((p0 + p0) - (((p1 + p1) + (p1 + p1)) + p1)) + ((p2 + p2) + (p2 + p2))) - p3;
+    let c = (((p1 - p2) + (p1 - p2)) + (p1 - p2)) + (p3 - p0);
+    return p1 + (t * (a + t * (b + t * c))) * p.half;
+}
+
+// Grid coordinates of unit direction `q` on guide face `f` (`z` 0 behind it).
+fn guide_grid(f: u32, q: vec3<f64>) -> vec3<f64> {
+    let face = guide_faces[f];
+    let k = guide_dot(face.centre, q);
+    if !(k > 0.0lf) {
+        return vec3<f64>(0.0lf, 0.0lf, 0.0lf);
+    }
+    let gx = (guide_dot(face.east, q) / k - face.x0) / face.step - p.half;
+    let gy = (guide_dot(face.north, q) / k - face.y0) / face.step - p.half;
+    return vec3<f64>(gx, gy, p.one);
+}
+
+// The bicubic through the 4 x 4 taps at grid fractions `(u, v)` from the taps' second cell.
+fn guide_bicubic(taps: array<f64, 16>, u: f64, v: f64) -> f64 {
+    let r0 = catmull_rom(taps[0], taps[1], taps[2], taps[3], u);
+    let r1 = catmull_rom(taps[4], taps[5], taps[6], taps[7], u);
+    let r2 = catmull_rom(taps[8], taps[9], taps[10], taps[11], u);
+    let r3 = catmull_rom(taps[12], taps[13], taps[14], taps[15], u);
+    return catmull_rom(r0, r1, r2, r3, v);
+}
+
+// `Guide::bend`: the bicubic through the map's cells at `d` less its mean at the diamond's
+// corners `[a, t, b, d]`, all read from the cubic piece of `d`'s cell (0 without data).
+fn guide_bend(d: vec3<f64>, ca: vec3<f64>, ct: vec3<f64>, cb: vec3<f64>, cd: vec3<f64>) -> f64 {
+    let best = guide_face(d).index;
+    let g = guide_grid(best, d);
+    let ga = guide_grid(best, ca);
+    let gt = guide_grid(best, ct);
+    let gb = guide_grid(best, cb);
+    let gd = guide_grid(best, cd);
+    if min(min(g.z, ga.z), min(min(gt.z, gb.z), gd.z)) < p.half {
+        return 0.0lf;
+    }
+    let side = f64(p.guide_side);
+    let ix = min(floor(min(max(g.x, 0.0lf), side - p.one)), side - 2.0lf);
+    let iy = min(floor(min(max(g.y, 0.0lf), side - p.one)), side - 2.0lf);
+    let face = best * p.guide_side * p.guide_side;
+    var taps: array<f64, 16>;
+    for (var j = 0u; j < 4u; j++) {
+        let y = u32(min(max(iy + f64(j) - p.one, 0.0lf), side - p.one));
+        for (var i = 0u; i < 4u; i++) {
+            let x = u32(min(max(ix + f64(i) - p.one, 0.0lf), side - p.one));
+            let v = f64(guide_values[face + y * p.guide_side + x]);
+            if v < -1.0e29lf {
+                return 0.0lf;
+            }
+            taps[j * 4u + i] = v;
+        }
+    }
+    let centre = guide_bicubic(taps, g.x - ix, g.y - iy);
+    let va = guide_bicubic(taps, ga.x - ix, ga.y - iy);
+    let vt = guide_bicubic(taps, gt.x - ix, gt.y - iy);
+    let vb = guide_bicubic(taps, gb.x - ix, gb.y - iy);
+    let vd = guide_bicubic(taps, gd.x - ix, gd.y - iy);
+    return centre - ((va + vb) * p.half + (vt + vd) * p.half) * p.half;
 }
 
 fn edge_centre(s: Site) -> vec3<f64> {
@@ -355,7 +433,8 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         } else if mapped.found {
             let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
             let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-            g = parts.mean + p.sea_detail * (parts.ridge + parts.offset);
+            let bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)));
+            g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
         } else {
             g = mid_ground + (xi - p.half) * sea_roughness(len);
         }
@@ -549,6 +628,11 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
             map_pixel = p.guide_min_edge;
         }
         wanted = landform_ground(grounds, edge_len, seed, map_relief, map_pixel);
+        if p.guide_faces > 0u {
+            // As on the CPU: the map's smooth surface bends the diamond's mean (`Guide::bend`).
+            let c = array<vec3<f64>, 4>(normalize3(triple(around[0].pos)), normalize3(triple(around[1].pos)), normalize3(triple(around[2].pos)), normalize3(triple(around[3].pos)));
+            wanted = wanted + guide_bend(at_unit, c[0], c[1], c[2], c[3]);
+        }
     }
     let lo = max(bank_lo, slope_lo);
     var g: f64;

@@ -166,9 +166,8 @@ impl Guide {
         Some(Guide { faces, side, values, min_edge_m: pixel * radius })
     }
 
-    /// The grid index of the cell at the lower corner of the four [`Guide::at`] interpolates
-    /// between for unit direction `d`, and the fractions towards the other three.
-    fn cell(&self, d: DVec3) -> Option<(usize, f64, f64)> {
+    /// The face whose centre unit direction `d` is nearest, and `d`'s dot product with it.
+    fn face_of(&self, d: DVec3) -> (usize, f64) {
         let mut best = 0usize;
         let mut best_k = f64::MIN;
         for (i, f) in self.faces.iter().enumerate() {
@@ -178,6 +177,13 @@ impl Guide {
                 best = i;
             }
         }
+        (best, best_k)
+    }
+
+    /// The grid index of the cell at the lower corner of the four [`Guide::at`] interpolates
+    /// between for unit direction `d`, and the fractions towards the other three.
+    fn cell(&self, d: DVec3) -> Option<(usize, f64, f64)> {
+        let (best, best_k) = self.face_of(d);
         if best_k <= 0.0 {
             return None;
         }
@@ -214,6 +220,52 @@ impl Guide {
         Some(a + (b - a) * fy)
     }
 
+    /// The bend of the map's smooth surface over a diamond below its pixel: how far a
+    /// Catmull-Rom bicubic through the cells stands at the new vertex `d` above the mean of its
+    /// values at the diamond's corners `[a, t, b, d]` (unit directions), as `split.wgsl`'s
+    /// `guide_bend` computes it. All five points are read on `d`'s face from one cubic piece,
+    /// the 4 x 4 cells around `d`'s cell (clamped to the grid), so that the sum of the bends
+    /// down a cascade of splits rebuilds that surface below the map's pixel: its crests
+    /// rounded up, its valleys down, where a bilinear patch is flat (0 where a cell lacks data).
+    pub fn bend(&self, d: DVec3, corners: [DVec3; 4]) -> f64 {
+        let (best, _) = self.face_of(d);
+        let f = &self.faces[best];
+        // Grid coordinates on the face (cell centres at whole numbers); None behind it.
+        let grid = |q: DVec3| {
+            let k = dot(f.centre, q);
+            (k > 0.0).then(|| ((dot(f.east, q) / k - f.x0) / f.step - 0.5, (dot(f.north, q) / k - f.y0) / f.step - 0.5))
+        };
+        let (Some((gx, gy)), Some(ca), Some(ct), Some(cb), Some(cd)) =
+            (grid(d), grid(corners[0]), grid(corners[1]), grid(corners[2]), grid(corners[3]))
+        else {
+            return 0.0;
+        };
+        let side = f64::from(self.side);
+        let ix = gx.max(0.0).min(side - 1.0).floor().min(side - 2.0);
+        let iy = gy.max(0.0).min(side - 1.0).floor().min(side - 2.0);
+        let s = self.side as usize;
+        let face = best * s * s;
+        let mut taps = [[0.0f64; 4]; 4];
+        for (j, row) in taps.iter_mut().enumerate() {
+            let y = (iy + j as f64 - 1.0).max(0.0).min(side - 1.0) as usize;
+            for (i, tap) in row.iter_mut().enumerate() {
+                let x = (ix + i as f64 - 1.0).max(0.0).min(side - 1.0) as usize;
+                let v = self.values[face + y * s + x];
+                if v < -1.0e29 {
+                    return 0.0;
+                }
+                *tap = f64::from(v);
+            }
+        }
+        let at = |(x, y): (f64, f64)| {
+            let (u, v) = (x - ix, y - iy);
+            let r = taps.map(|row| catmull_rom(row, u));
+            catmull_rom(r, v)
+        };
+        let centre = at((gx, gy));
+        centre - ((at(ca) + at(cb)) * 0.5 + (at(ct) + at(cd)) * 0.5) * 0.5
+    }
+
     /// The map's roughness within one cell at unit direction `d`: the twist of the bilinear
     /// patch [`Guide::at`] interpolates on, `|v00 + v11 - v10 - v01|` — zero on a plane however
     /// steep, large across crests, saddles and valleys (0 without data). `split.wgsl`'s
@@ -221,6 +273,18 @@ impl Guide {
     pub fn relief_at(&self, d: DVec3) -> f64 {
         self.patch(d).map_or(0.0, |([v00, v10, v01, v11], _, _)| ((v00 + v11) - (v10 + v01)).abs())
     }
+}
+
+/// The Catmull-Rom cubic through `p[1]` (at 0) and `p[2]` (at 1), at `t` (any real: read
+/// beyond the two, it extends the same cubic), written with additions only where the textbook
+/// form has constants, as `split.wgsl`'s `catmull_rom`.
+#[inline]
+fn catmull_rom(p: [f64; 4], t: f64) -> f64 {
+    let [p0, p1, p2, p3] = p;
+    let a = p2 - p0;
+    let b = (((p0 + p0) - (((p1 + p1) + (p1 + p1)) + p1)) + ((p2 + p2) + (p2 + p2))) - p3;
+    let c = (((p1 - p2) + (p1 - p2)) + (p1 - p2)) + (p3 - p0);
+    p1 + (t * (a + t * (b + t * c))) * 0.5
 }
 
 #[cfg(test)]
@@ -270,6 +334,34 @@ mod tests {
         // of ~0.012 radians: errors of a few metres (the map's own cells are tall near the poles).
         assert!(worst < 10.0, "{worst} m");
         assert_eq!(g.at(direction(45.0, 10.0)), None, "no data in the hole");
+    }
+
+    #[test]
+    fn the_bend_rounds_crests_up_and_valleys_down_and_leaves_planes_flat() {
+        let b = GeoBounds { west: 0.0, south: 0.0, east: 2.0, north: 2.0 };
+        // 0.05° pixels (5.6 km); `f` of the longitude and latitude.
+        let guide = |f: &dyn Fn(f64, f64) -> f64| {
+            let values = (0..1600).map(|i| f(b.lon_of(i % 40, 40), b.lat_of(i / 40, 40)) as f32).collect::<Vec<f32>>();
+            Guide::from_map(&Map::from_values(MapKind::Elevation, 40, 40, b, values).unwrap(), R).unwrap()
+        };
+        // A diamond 0.06° across at (1°, 1°): the split edge runs north-south, `t` and `d` lie
+        // east and west of it.
+        let at = |lat: f64, lon: f64| direction(lat, lon);
+        let (m, corners) = (at(1.0, 1.0), [at(0.97, 1.0), at(1.0, 1.03), at(1.03, 1.0), at(1.0, 0.97)]);
+        let ridge = |lon: f64, _: f64| 1000.0 * (-((lon - 1.0) / 0.2).powi(2)).exp();
+        // Along a crest 1,000 m high, 0.2° wide: the corners across it stand ~22 m lower, so
+        // the cubic surface at the centre is ~11 m above the corners' mean.
+        let crest = guide(&ridge).bend(m, corners);
+        assert!(crest > 5.0 && crest < 20.0, "{crest}");
+        let valley = guide(&|lon, lat| -ridge(lon, lat)).bend(m, corners);
+        assert!((valley + crest).abs() < 0.01 * crest, "{valley} vs {crest}");
+        // A plane, however steep: no bend (the cubic reproduces it; the grid's gnomonic
+        // resampling bends it by centimetres).
+        let plane = guide(&|lon, lat| 2_000.0 * lon - 1_000.0 * lat).bend(m, corners);
+        assert!(plane.abs() < 0.5, "{plane}");
+        // Without data under the taps: none.
+        let hole = guide(&|lon, lat| if (lon - 1.0).abs() < 0.15 && lat > 1.0 { f64::NAN } else { ridge(lon, lat) });
+        assert_eq!(hole.bend(m, corners), 0.0);
     }
 
     #[test]

@@ -120,10 +120,13 @@ pub fn wet_vertex(
                 // Below the map's pixel, the sea floor's detail follows its landform as the
                 // land's does: shelves and abyssal plains stay flat, continental slopes,
                 // ridges and trenches rough (the paper's 2 % of the edge everywhere put tens
-                // of metres of relief on flat shelves the map shows a few metres deep).
+                // of metres of relief on flat shelves the map shows a few metres deep), bent
+                // as the map's smooth surface (`Guide::bend`).
                 Some((g, _)) => {
                     let corners = [va, d.t(), vb, d.d()].map(|v| v.ground);
+                    let [a, b, t, e] = corner_directions(d);
                     sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m])
+                        + g.bend(dir, [a, t, b, e])
                 }
                 None => mid_ground + (xi - 0.5) * sea_roughness(len),
             };
@@ -254,7 +257,12 @@ fn continent_vertex(
         Some(m) => m,
         None => {
             let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
-            landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope(), map)
+            let ground =
+                landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope(), map);
+            // Under a map, its smooth surface bends the diamond's mean: crests below the map's
+            // pixel round up, valleys down, as the map's cubic surface does.
+            let [ca, cb, ct, cd] = corners;
+            guide.map_or(ground, |g| ground + g.bend(dir, [ca, ct, cb, cd]))
         }
     };
     let lo = bank_lo.max(slope_lo);
