@@ -292,7 +292,11 @@ fn guide_bicubic(taps: array<f64, 16>, u: f64, v: f64) -> f64 {
 
 // `Guide::bend`: the bicubic through the map's cells at `d` less its mean at the diamond's
 // corners `[a, t, b, d]`, all read from the cubic piece of `d`'s cell (0 without data).
-fn guide_bend(d: vec3<f64>, ca: vec3<f64>, ct: vec3<f64>, cb: vec3<f64>, cd: vec3<f64>) -> f64 {
+fn guide_bend(d: vec3<f64>, ca: vec3<f64>, ct: vec3<f64>, cb: vec3<f64>, cd: vec3<f64>, edge_len: f64) -> f64 {
+    // `BEND_REACH` (16): none for edges that much shorter than the map's pixel.
+    if edge_len * 16.0lf < p.guide_min_edge {
+        return 0.0lf;
+    }
     let best = guide_face(d).index;
     let g = guide_grid(best, d);
     let ga = guide_grid(best, ca);
@@ -433,7 +437,7 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         } else if mapped.found {
             let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
             let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-            let bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)));
+            let bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
             g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
         } else {
             g = mid_ground + (xi - p.half) * sea_roughness(len);
@@ -631,7 +635,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         if p.guide_faces > 0u {
             // As on the CPU: the map's smooth surface bends the diamond's mean (`Guide::bend`).
             let c = array<vec3<f64>, 4>(normalize3(triple(around[0].pos)), normalize3(triple(around[1].pos)), normalize3(triple(around[2].pos)), normalize3(triple(around[3].pos)));
-            wanted = wanted + guide_bend(at_unit, c[0], c[1], c[2], c[3]);
+            wanted = wanted + guide_bend(at_unit, c[0], c[1], c[2], c[3], edge_len);
         }
     }
     let lo = max(bank_lo, slope_lo);

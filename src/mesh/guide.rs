@@ -24,6 +24,12 @@ use rayon::prelude::*;
 
 /// Most cells along a face's side.
 pub const MAX_SIDE: u32 = 1024;
+/// How many times shorter than the map's pixel a split edge may be and still follow the
+/// bend of the map's bicubic surface ([`Guide::bend`]): the bend at an edge `h` is the
+/// surface's curvature times `h²`, so below a sixteenth of the pixel all the levels left add
+/// about 1/256 of the bend at the pixel (under a metre where the pixel's own is 100 m), and
+/// the splits that make up most of a fine DEM skip the 16 cells' lookup.
+pub const BEND_REACH: f64 = 16.0;
 /// A cell without data (stored instead of NaN, which shader compilers may assume away).
 pub const NO_DATA: f32 = -1.0e30;
 
@@ -227,7 +233,13 @@ impl Guide {
     /// the 4 x 4 cells around `d`'s cell (clamped to the grid), so that the sum of the bends
     /// down a cascade of splits rebuilds that surface below the map's pixel: its crests
     /// rounded up, its valleys down, where a bilinear patch is flat (0 where a cell lacks data).
-    pub fn bend(&self, d: DVec3, corners: [DVec3; 4]) -> f64 {
+    ///
+    /// A split edge shorter than the pixel by more than [`BEND_REACH`] gets none: the bend
+    /// falls with the square of the edge, and what it has left there is centimetres.
+    pub fn bend(&self, d: DVec3, corners: [DVec3; 4], edge_len: f64) -> f64 {
+        if edge_len * BEND_REACH < self.min_edge_m {
+            return 0.0;
+        }
         let (best, _) = self.face_of(d);
         let f = &self.faces[best];
         // Grid coordinates on the face (cell centres at whole numbers); None behind it.
@@ -351,17 +363,19 @@ mod tests {
         let ridge = |lon: f64, _: f64| 1000.0 * (-((lon - 1.0) / 0.2).powi(2)).exp();
         // Along a crest 1,000 m high, 0.2° wide: the corners across it stand ~22 m lower, so
         // the cubic surface at the centre is ~11 m above the corners' mean.
-        let crest = guide(&ridge).bend(m, corners);
+        let crest = guide(&ridge).bend(m, corners, 5_000.0);
         assert!(crest > 5.0 && crest < 20.0, "{crest}");
-        let valley = guide(&|lon, lat| -ridge(lon, lat)).bend(m, corners);
+        // Splits of edges far below the pixel (5.6 km / 16) skip it.
+        assert_eq!(guide(&ridge).bend(m, corners, 300.0), 0.0);
+        let valley = guide(&|lon, lat| -ridge(lon, lat)).bend(m, corners, 5_000.0);
         assert!((valley + crest).abs() < 0.01 * crest, "{valley} vs {crest}");
         // A plane, however steep: no bend (the cubic reproduces it; the grid's gnomonic
         // resampling bends it by centimetres).
-        let plane = guide(&|lon, lat| 2_000.0 * lon - 1_000.0 * lat).bend(m, corners);
+        let plane = guide(&|lon, lat| 2_000.0 * lon - 1_000.0 * lat).bend(m, corners, 5_000.0);
         assert!(plane.abs() < 0.5, "{plane}");
         // Without data under the taps: none.
         let hole = guide(&|lon, lat| if (lon - 1.0).abs() < 0.15 && lat > 1.0 { f64::NAN } else { ridge(lon, lat) });
-        assert_eq!(hole.bend(m, corners), 0.0);
+        assert_eq!(hole.bend(m, corners, 5_000.0), 0.0);
     }
 
     #[test]

@@ -126,7 +126,7 @@ pub fn wet_vertex(
                     let corners = [va, d.t(), vb, d.d()].map(|v| v.ground);
                     let [a, b, t, e] = corner_directions(d);
                     sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m])
-                        + g.bend(dir, [a, t, b, e])
+                        + g.bend(dir, [a, t, b, e], len)
                 }
                 None => mid_ground + (xi - 0.5) * sea_roughness(len),
             };
@@ -262,7 +262,7 @@ fn continent_vertex(
             // Under a map, its smooth surface bends the diamond's mean: crests below the map's
             // pixel round up, valleys down, as the map's cubic surface does.
             let [ca, cb, ct, cd] = corners;
-            guide.map_or(ground, |g| ground + g.bend(dir, [ca, ct, cb, cd]))
+            guide.map_or(ground, |g| ground + g.bend(dir, [ca, ct, cb, cd], edge_len))
         }
     };
     let lo = bank_lo.max(slope_lo);
