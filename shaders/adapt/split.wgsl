@@ -550,10 +550,12 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     var around: array<Vertex, 4>;
     var lens: array<f64, 4>;
     var grounds: array<f64, 4>;
+    var dirs: array<vec3<f64>, 4>;
     let at_unit = normalize3(at);
     for (var i = 0u; i < 4u; i++) {
         around[i] = vertices[ends[i]];
-        lens[i] = distance3(at_unit, normalize3(triple(around[i].pos))) * p.radius;
+        dirs[i] = normalize3(triple(around[i].pos));
+        lens[i] = distance3(at_unit, dirs[i]) * p.radius;
         grounds[i] = around[i].ground;
     }
     // As on the CPU: under an elevation map, a river's bank gives way where the map shows the
@@ -634,8 +636,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         wanted = landform_ground(grounds, edge_len, seed, map_relief, map_pixel);
         if p.guide_faces > 0u {
             // As on the CPU: the map's smooth surface bends the diamond's mean (`Guide::bend`).
-            let c = array<vec3<f64>, 4>(normalize3(triple(around[0].pos)), normalize3(triple(around[1].pos)), normalize3(triple(around[2].pos)), normalize3(triple(around[3].pos)));
-            wanted = wanted + guide_bend(at_unit, c[0], c[1], c[2], c[3], edge_len);
+            wanted = wanted + guide_bend(at_unit, dirs[0], dirs[1], dirs[2], dirs[3], edge_len);
         }
     }
     let lo = max(bank_lo, slope_lo);
