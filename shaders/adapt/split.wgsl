@@ -170,13 +170,8 @@ fn guide_dot(a: vec3<f64>, b: vec3<f64>) -> f64 {
     return (a.x * b.x + a.y * b.y) + a.z * b.z;
 }
 
-// `Guide::face_of`: the guide face whose centre `d` is nearest, and `d`'s dot product with it.
-struct GuideFaceAt {
-    index: u32,
-    k: f64,
-}
-
-fn guide_face(d: vec3<f64>) -> GuideFaceAt {
+// `Guide::face_of`: the guide face whose centre `d` is nearest.
+fn guide_face(d: vec3<f64>) -> u32 {
     var best = 0u;
     var best_k = -F64_MAX;
     for (var i = 0u; i < p.guide_faces; i++) {
@@ -186,7 +181,7 @@ fn guide_face(d: vec3<f64>) -> GuideFaceAt {
             best = i;
         }
     }
-    return GuideFaceAt(best, best_k);
+    return best;
 }
 
 // The cell of the guide's grid under unit direction `d` (`Guide::cell`): the index of the
@@ -199,18 +194,17 @@ struct GuideCell {
 }
 
 fn guide_cell(d: vec3<f64>) -> GuideCell {
-    let nearest = guide_face(d);
-    let best = nearest.index;
-    let best_k = nearest.k;
-    if p.guide_faces == 0u || best_k <= 0.0lf {
+    let best = guide_face(d);
+    if p.guide_faces == 0u {
         return GuideCell(false, 0u, 0.0lf, 0.0lf);
     }
-    let f = guide_faces[best];
-    let x = guide_dot(f.east, d) / best_k;
-    let y = guide_dot(f.north, d) / best_k;
+    let at_grid = guide_grid(best, d);
+    if at_grid.z < p.half {
+        return GuideCell(false, 0u, 0.0lf, 0.0lf);
+    }
     let side = f64(p.guide_side);
-    let gx = min(max((x - f.x0) / f.step - p.half, 0.0lf), side - p.one);
-    let gy = min(max((y - f.y0) / f.step - p.half, 0.0lf), side - p.one);
+    let gx = min(max(at_grid.x, 0.0lf), side - p.one);
+    let gy = min(max(at_grid.y, 0.0lf), side - p.one);
     let ix = min(floor(gx), side - 2.0lf);
     let iy = min(floor(gy), side - 2.0lf);
     let at = best * p.guide_side * p.guide_side + u32(iy) * p.guide_side + u32(ix);
@@ -297,7 +291,7 @@ fn guide_bend(d: vec3<f64>, ca: vec3<f64>, ct: vec3<f64>, cb: vec3<f64>, cd: vec
     if edge_len * 16.0lf < p.guide_min_edge {
         return 0.0lf;
     }
-    let best = guide_face(d).index;
+    let best = guide_face(d);
     let g = guide_grid(best, d);
     let ga = guide_grid(best, ca);
     let gt = guide_grid(best, ct);

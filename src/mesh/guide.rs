@@ -172,8 +172,8 @@ impl Guide {
         Some(Guide { faces, side, values, min_edge_m: pixel * radius })
     }
 
-    /// The face whose centre unit direction `d` is nearest, and `d`'s dot product with it.
-    fn face_of(&self, d: DVec3) -> (usize, f64) {
+    /// The face whose centre unit direction `d` is nearest.
+    fn face_of(&self, d: DVec3) -> usize {
         let mut best = 0usize;
         let mut best_k = f64::MIN;
         for (i, f) in self.faces.iter().enumerate() {
@@ -183,22 +183,15 @@ impl Guide {
                 best = i;
             }
         }
-        (best, best_k)
+        best
     }
 
     /// The grid index of the cell at the lower corner of the four [`Guide::at`] interpolates
     /// between for unit direction `d`, and the fractions towards the other three.
     fn cell(&self, d: DVec3) -> Option<(usize, f64, f64)> {
-        let (best, best_k) = self.face_of(d);
-        if best_k <= 0.0 {
-            return None;
-        }
-        let f = &self.faces[best];
-        let x = dot(f.east, d) / best_k;
-        let y = dot(f.north, d) / best_k;
+        let best = self.face_of(d);
+        let (gx, gy) = grid(&self.faces[best], d)?;
         let side = f64::from(self.side);
-        let gx = (x - f.x0) / f.step - 0.5;
-        let gy = (y - f.y0) / f.step - 0.5;
         // Clamped to the cell centres (a cube face's outer half cells; a regional grid's
         // margin holds NaN, so directions beyond it find no data).
         let (gx, gy) = (gx.max(0.0).min(side - 1.0), gy.max(0.0).min(side - 1.0));
@@ -240,15 +233,10 @@ impl Guide {
         if edge_len * BEND_REACH < self.min_edge_m {
             return 0.0;
         }
-        let (best, _) = self.face_of(d);
+        let best = self.face_of(d);
         let f = &self.faces[best];
-        // Grid coordinates on the face (cell centres at whole numbers); None behind it.
-        let grid = |q: DVec3| {
-            let k = dot(f.centre, q);
-            (k > 0.0).then(|| ((dot(f.east, q) / k - f.x0) / f.step - 0.5, (dot(f.north, q) / k - f.y0) / f.step - 0.5))
-        };
         let (Some((gx, gy)), Some(ca), Some(ct), Some(cb), Some(cd)) =
-            (grid(d), grid(corners[0]), grid(corners[1]), grid(corners[2]), grid(corners[3]))
+            (grid(f, d), grid(f, corners[0]), grid(f, corners[1]), grid(f, corners[2]), grid(f, corners[3]))
         else {
             return 0.0;
         };
@@ -285,6 +273,13 @@ impl Guide {
     pub fn relief_at(&self, d: DVec3) -> f64 {
         self.patch(d).map_or(0.0, |([v00, v10, v01, v11], _, _)| ((v00 + v11) - (v10 + v01)).abs())
     }
+}
+
+/// Grid coordinates of unit direction `q` on face `f` (cell centres at whole numbers); None
+/// behind the face.
+fn grid(f: &GuideFace, q: DVec3) -> Option<(f64, f64)> {
+    let k = dot(f.centre, q);
+    (k > 0.0).then(|| ((dot(f.east, q) / k - f.x0) / f.step - 0.5, (dot(f.north, q) / k - f.y0) / f.step - 0.5))
 }
 
 /// The Catmull-Rom cubic through `p[1]` (at 0) and `p[2]` (at 1), at `t` (any real: read
