@@ -431,7 +431,11 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         } else if mapped.found {
             let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
             let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-            let bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
+            // The corners' directions only where the bend is made (`Guide::bends`).
+            var bend = 0.0lf;
+            if len * 16.0lf >= p.guide_min_edge {
+                bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
+            }
             g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
         } else {
             g = mid_ground + (xi - p.half) * sea_roughness(len);

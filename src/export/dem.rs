@@ -214,6 +214,9 @@ pub struct Dem {
 /// Samples the DEM of `req` from the planet with base mesh `base` and its tree.
 pub fn sample_dem(tiles: &PlanetTiles, req: &DemRequest) -> Dem {
     let (w, h) = (req.width, req.height);
+    // The planet's face index, made (once per planet, in parallel) before the blocks need it:
+    // made by the first block, it kept the other threads waiting.
+    tiles.index_faces();
     let blocks: Vec<(u32, u32)> =
         (0..h.div_ceil(BLOCK)).flat_map(|by| (0..w.div_ceil(BLOCK)).map(move |bx| (bx, by))).collect();
     let done: Vec<(Block, usize)> =
@@ -449,19 +452,20 @@ impl<'a> Surface<'a> {
         let mut ground = vec![f32::NAN; n];
         let mut water = vec![f32::NAN; n];
         let mut owned = vec![false; n];
-        // Cell directions from each row's and each column's sines and cosines.
+        // Cell directions from each row's and each column's sines and cosines, made per cell
+        // (a table of every cell's direction, read in the leaves' order, missed the cache).
         let lats: Vec<(f64, f64)> = (0..rows).map(|i| req.lat_of(f64::from(row0 + i)).to_radians().sin_cos()).collect();
         let lons: Vec<(f64, f64)> = (0..cols).map(|i| b.lon_of(col0 + i, req.width).to_radians().sin_cos()).collect();
-        let dirs: Vec<DVec3> = lats
-            .iter()
-            .flat_map(|&(sa, ca)| lons.iter().map(move |&(so, co)| DVec3::new(ca * co, ca * so, sa)))
-            .collect();
+        let dir = |row: u32, col: u32| {
+            let ((sa, ca), (so, co)) = (lats[row as usize], lons[col as usize]);
+            DVec3::new(ca * co, ca * so, sa)
+        };
         let row_map = req.row_map();
         // Ground and water of cell `i` on the triangle with corners `local` in `heights` and
         // edge planes `n`: water where the level, interpolated as the ground is, stands above it.
         let heights = &self.heights;
-        let sample = |i: usize, local: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
-            let wgt = weights(n, dirs[i]);
+        let sample = |d: DVec3, local: &[u32; 3], n: &[DVec3; 3]| -> (f32, f32) {
+            let wgt = weights(n, d);
             let [g, level] =
                 [0, 1].map(|b| (0..3).map(|k| f64::from(wgt[k]) * heights[local[k] as usize][b]).sum::<f64>());
             let water = if level > g { (level - sea) as f32 } else { f32::NAN };
@@ -545,9 +549,12 @@ impl<'a> Surface<'a> {
                 for (c0, c1) in ranges.clone() {
                     for col in c0..=c1 {
                         let i = (row * cols + col) as usize;
-                        if !owned[i] && inside(&n, dirs[i]) {
-                            (ground[i], water[i]) = sample(i, local, &n);
-                            owned[i] = true;
+                        if !owned[i] {
+                            let d = dir(row, col);
+                            if inside(&n, d) {
+                                (ground[i], water[i]) = sample(d, local, &n);
+                                owned[i] = true;
+                            }
                         }
                     }
                 }
@@ -556,7 +563,7 @@ impl<'a> Surface<'a> {
         // A cell no triangle claimed (rounding on an edge or corner): the leaf it lies least outside.
         for i in 0..n {
             if !owned[i] {
-                let d = dirs[i];
+                let d = dir(i as u32 / cols, i as u32 % cols);
                 let planes = |leaf: &[u32; 3]| {
                     let p = leaf.map(|v| mesh.pos(v));
                     [p[1].cross(p[2]), p[2].cross(p[0]), p[0].cross(p[1])]
@@ -567,7 +574,7 @@ impl<'a> Surface<'a> {
                 };
                 let best = leaves.iter().zip(&self.local).max_by(|a, b| score(a.0).total_cmp(&score(b.0)));
                 if let Some((leaf, local)) = best {
-                    (ground[i], water[i]) = sample(i, local, &planes(leaf));
+                    (ground[i], water[i]) = sample(d, local, &planes(leaf));
                 }
             }
         }

@@ -219,6 +219,13 @@ impl Guide {
         Some(a + (b - a) * fy)
     }
 
+    /// Whether [`Guide::bend`] bends a split of an edge `edge_len` metres long (not one
+    /// [`BEND_REACH`] times shorter than the map's pixel): a caller may skip making its
+    /// arguments otherwise.
+    pub fn bends(&self, edge_len: f64) -> bool {
+        edge_len * BEND_REACH >= self.min_edge_m
+    }
+
     /// The bend of the map's smooth surface over a diamond below its pixel: how far a
     /// Catmull-Rom bicubic through the cells stands at the new vertex `d` above the mean of its
     /// values at the diamond's corners `[a, t, b, d]` (unit directions), as `split.wgsl`'s
@@ -230,7 +237,7 @@ impl Guide {
     /// A split edge shorter than the pixel by more than [`BEND_REACH`] gets none: the bend
     /// falls with the square of the edge, and what it has left there is centimetres.
     pub fn bend(&self, d: DVec3, corners: [DVec3; 4], edge_len: f64) -> f64 {
-        if edge_len * BEND_REACH < self.min_edge_m {
+        if !self.bends(edge_len) {
             return 0.0;
         }
         let best = self.face_of(d);

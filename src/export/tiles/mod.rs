@@ -158,6 +158,12 @@ impl PlanetTiles {
         self.faces.get_or_init(|| crate::export::face_index::FaceIndex::new(&self.planet.mesh))
     }
 
+    /// Makes the face index that DEMs and terrain and elevation tiles find their region's faces
+    /// in, if not made yet (once per planet; otherwise the first of them makes it).
+    pub fn index_faces(&self) {
+        self.faces();
+    }
+
     /// A refiner below this planet's base mesh, on spare buffers when there are some; give
     /// them back with [`PlanetTiles::recycle`].
     pub(crate) fn refiner(&self) -> Refiner<'_> {

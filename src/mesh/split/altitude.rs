@@ -124,9 +124,13 @@ pub fn wet_vertex(
                 // as the map's smooth surface (`Guide::bend`).
                 Some((g, _)) => {
                     let corners = [va, d.t(), vb, d.d()].map(|v| v.ground);
-                    let [a, b, t, e] = corner_directions(d);
-                    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m])
-                        + g.bend(dir, [a, t, b, e], len)
+                    let bend = if g.bends(len) {
+                        let [a, b, t, e] = corner_directions(d);
+                        g.bend(dir, [a, t, b, e], len)
+                    } else {
+                        0.0
+                    };
+                    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m]) + bend
                 }
                 None => mid_ground + (xi - 0.5) * sea_roughness(len),
             };
