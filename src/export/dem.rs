@@ -350,20 +350,28 @@ impl<'a> Surface<'a> {
         // About one split per cell at the finest, plus the border's.
         let span = |d: f64, c: f64| ((d / c).ceil().min(1e6) as usize) + 8;
         refiner.reserve((span(rect.east - rect.west, dx) * span(rect.north - rect.south, dy)).min(1 << 20));
-        // Nodes with their corners' unit vectors (a child shares two corners with its parent).
+        // Nodes with their corners' unit vectors (a child shares two corners with its parent)
+        // and which of them lie in the region (bit `i` for corner `i`).
         let unit = |refiner: &Refiner, v: u32| refiner.mesh().pos(v).normalize();
-        let mut stack: Vec<([u32; 3], [DVec3; 3])> =
-            ROOTS.iter().map(|&node| (node, node.map(|v| unit(&refiner, v)))).collect();
-        while let Some((node, u)) = stack.pop() {
+        let mut stack: Vec<([u32; 3], [DVec3; 3], u8)> = ROOTS
+            .iter()
+            .map(|&node| {
+                let u = node.map(|v| unit(&refiner, v));
+                let held = (0..3).filter(|&i| region.holds(u[i])).fold(0, |m, i| m | 1 << i);
+                (node, u, held)
+            })
+            .collect();
+        while let Some((node, u, held)) = stack.pop() {
             // A node's descendants are not inside it (eq. 2): it is passed over only when
             // nothing within DESCENDANT_REACH of its longest edge meets the region (without
             // that, base faces 90 times the cells' size were left unsplit inside regions whose
             // ancestors lay outside; at a reach of 0.3, 4 of the 528 tested terrain-tile sides
-            // differ again).
-            let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
-            let reach = DESCENDANT_REACH * longest;
-            if !region.may_meet_within(&u, reach) {
-                continue;
+            // differ again). A node with a corner in the region meets it.
+            if held == 0 {
+                let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+                if !region.may_meet_within(&u, DESCENDANT_REACH * longest) {
+                    continue;
+                }
             }
             // A leaf: at least the base mesh's detail, and edges no longer than a cell where the
             // node's cells are narrowest (a function of the node and the cell size alone, so
@@ -380,7 +388,12 @@ impl<'a> Surface<'a> {
             }
             let [a, b] = refiner.children(node);
             let um = unit(&refiner, a[0]);
-            stack.extend([(a, [um, u[0], u[1]]), (b, [um, u[2], u[0]])]);
+            let m = u8::from(region.holds(um));
+            let bit = |i: usize| (held >> i) & 1;
+            stack.extend([
+                (a, [um, u[0], u[1]], m | bit(0) << 1 | bit(1) << 2),
+                (b, [um, u[2], u[0]], m | bit(2) << 1 | bit(0) << 2),
+            ]);
         }
         // The faces of the refined (conforming) mesh that may hold a cell: a split's vertex
         // leaves the split edge (eq. 2), so a node's children cover part of the neighbour across
@@ -388,13 +401,19 @@ impl<'a> Surface<'a> {
         // faces do. The index lists the base faces near the rectangle and every face a split
         // added.
         let mesh = refiner.mesh();
-        let leaves: Vec<[u32; 3]> = tiles
+        // Each with whether it may meet the rectangle itself (the faces the cells are sampled
+        // on; the others hold the margin's vertices), from one normalisation of its corners.
+        let inside = Region::new(rect);
+        let (leaves, inner): (Vec<[u32; 3]>, Vec<bool>) = tiles
             .faces()
             .candidates(&carving, mesh.faces.len())
             .into_iter()
-            .map(|f| mesh.corners(f))
-            .filter(|c| region.may_meet(&c.map(|v| mesh.pos(v).normalize())))
-            .collect();
+            .filter_map(|f| {
+                let c = mesh.corners(f);
+                let u = c.map(|v| mesh.pos(v).normalize());
+                region.may_meet(&u).then(|| (c, inside.may_meet(&u)))
+            })
+            .unzip();
         let (mut around, triangles, _) = leaf_vertices_from(mesh, &leaves, refiner.base_vertices());
         if let Carve { margin, floods: true, course } = carve {
             let target = |dir: DVec3| leaf_target(params, cell, rows, lat_lon(dir).0);
@@ -421,13 +440,7 @@ impl<'a> Surface<'a> {
         // were water, beside streams a few metres wide.)
         let levels = water_levels(&around, &triangles);
         let heights = around.vertices.iter().zip(levels).map(|(v, level)| [v.ground, level]).collect();
-        let inside = Region::new(rect);
-        let mesh = refiner.mesh();
-        let (leaves, local) = leaves
-            .into_iter()
-            .zip(triangles)
-            .filter(|(c, _)| inside.may_meet(&c.map(|v| mesh.pos(v).normalize())))
-            .unzip();
+        let (leaves, local) = leaves.into_iter().zip(triangles).zip(inner).filter(|x| x.1).map(|x| x.0).unzip();
         Surface { tiles, refiner: Some(refiner), leaves, local, heights }
     }
 
@@ -690,6 +703,15 @@ impl Region {
         // A grid whose cells reach past a pole (the ring of a terrain tile) reaches the pole.
         let z = |lat: f64| lat.clamp(-90.0, 90.0).to_radians().sin();
         Region { meridians, z: [z(rect.south), z(rect.north)] }
+    }
+
+    /// Whether the unit direction `x` lies in the rectangle (then a triangle with that corner
+    /// meets it: [`Region::may_meet_within`] is true for it).
+    #[inline]
+    fn holds(&self, x: DVec3) -> bool {
+        self.meridians.is_none_or(|[nw, ne]| nw.dot(x) >= 0.0 && ne.dot(x) >= 0.0)
+            && x.z >= self.z[0]
+            && x.z <= self.z[1]
     }
 
     /// Whether the spherical triangle with unit corners `u` may meet the rectangle (never
