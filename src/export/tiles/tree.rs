@@ -202,12 +202,16 @@ impl<'a> Refiner<'a> {
         let sites = &mut self.sites;
         sites.clear();
         let touched = &mut self.touched;
+        // Only the base mesh's entities are restored (the appended ones are dropped): most
+        // splits, below the base mesh, touch few or none.
+        let (nv, ne, nf) = (base.vertices.len() as u32, base.edges.len() as u32, base.faces.len() as u32);
         let splits = mesh.refine_edge(e, &mut |m: &Mesh, site: &SplitSite| {
             sites.push(*site);
-            touched.vertices.extend([site.a, site.b]);
-            touched.faces.extend([site.f1, site.f2]);
+            touched.vertices.extend([site.a, site.b].into_iter().filter(|&v| v < nv));
+            touched.faces.extend([site.f1, site.f2].into_iter().filter(|&f| f < nf));
+            // (A face the refiner made may still have a base edge, whose links the split rewrites.)
             for f in [site.f1, site.f2] {
-                touched.edges.extend(m.faces[f as usize].e);
+                touched.edges.extend(m.faces[f as usize].e.into_iter().filter(|&e| e < ne));
             }
             split_vertex(&crate::mesh::Diamond::new(m, site), params, guide)
         });
