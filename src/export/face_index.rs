@@ -12,7 +12,6 @@ use crate::maps::GeoBounds;
 use crate::mesh::raster::triangle_bounds;
 use crate::mesh::split::position::DESCENDANT_REACH;
 use crate::mesh::Mesh;
-use rayon::prelude::*;
 
 /// Faces binned on a grid of square cells in degrees.
 pub struct FaceIndex {
@@ -31,19 +30,24 @@ pub struct FaceIndex {
 
 impl FaceIndex {
     /// Indexes the faces of `mesh`, on cells about twice its mean edge length.
+    ///
+    /// On one thread: the index is made inside a `OnceLock` that threads of rayon's pool may be
+    /// the first to reach (a terrain tile's rows); a parallel loop there lets the waiting
+    /// thread take up another job that reaches the same lock, which then never opens.
     pub fn new(mesh: &Mesh) -> FaceIndex {
         let n = mesh.faces.len().max(1) as f64;
         // Mean edge of equilateral faces tiling the sphere, in degrees.
         let edge = (4.0 * std::f64::consts::PI / n * 4.0 / 3f64.sqrt()).sqrt().to_degrees();
         let rows = ((180.0 / (2.0 * edge)).floor() as usize).clamp(1, 720);
         let (cell, cols) = (180.0 / rows as f64, 2 * rows);
-        // Each face's cells, listed in parallel (chunks of faces, then one sort: the same index
-        // whatever the threads).
-        let list = |f: usize, pairs: &mut Vec<(u32, u32)>| -> f64 {
+        let mut pairs: Vec<(u32, u32)> = Vec::new();
+        let mut longest_edge = 0f64;
+        for f in 0..mesh.faces.len() {
             let u = mesh.corners(f as u32).map(|v| mesh.pos(v).normalize());
             let nrm = [u[1].cross(u[2]), u[2].cross(u[0]), u[0].cross(u[1])];
             let (lo, hi, lon) = triangle_bounds(u, &nrm);
             let longest = u[0].distance(u[1]).max(u[1].distance(u[2])).max(u[2].distance(u[0]));
+            longest_edge = longest_edge.max(longest);
             let pad = DESCENDANT_REACH * longest.to_degrees();
             let row = |lat: f64| (((90.0 - lat) / cell).floor().max(0.0) as usize).min(rows - 1);
             let (r0, r1) = (row(hi + pad), row(lo - pad));
@@ -51,36 +55,21 @@ impl FaceIndex {
                 // Longitudes shrink towards the poles: widen by the pad at the row's poleward side.
                 let polar = (90.0 - r as f64 * cell).abs().max((90.0 - (r + 1) as f64 * cell).abs());
                 let squeeze = polar.min(89.0).to_radians().cos();
-                let key = |c: usize| ((r * cols + c) as u32, f as u32);
-                match lon {
+                let cells: Box<dyn Iterator<Item = usize>> = match lon {
                     Some((a, b)) if (b - a) + 2.0 * pad / squeeze < 180.0 => {
                         let widen = pad / squeeze;
                         let c0 = ((a - widen + 180.0) / cell).floor() as i64;
                         let c1 = ((b + widen + 180.0) / cell).floor() as i64;
-                        pairs.extend((c0..=c1).map(|c| key(c.rem_euclid(cols as i64) as usize)));
+                        Box::new((c0..=c1).map(move |c| c.rem_euclid(cols as i64) as usize))
                     }
-                    _ => pairs.extend((0..cols).map(key)),
+                    _ => Box::new(0..cols),
+                };
+                for c in cells {
+                    pairs.push(((r * cols + c) as u32, f as u32));
                 }
             }
-            longest
-        };
-        let (mut pairs, longest_edge) = (0..mesh.faces.len())
-            .into_par_iter()
-            .fold(
-                || (Vec::new(), 0f64),
-                |(mut pairs, longest), f| {
-                    let l = list(f, &mut pairs);
-                    (pairs, longest.max(l))
-                },
-            )
-            .reduce(
-                || (Vec::new(), 0f64),
-                |(mut a, la), (b, lb)| {
-                    a.extend(b);
-                    (a, la.max(lb))
-                },
-            );
-        pairs.par_sort_unstable();
+        }
+        pairs.sort_unstable();
         pairs.dedup();
         let mut start = vec![0u32; rows * cols + 1];
         for &(k, _) in &pairs {
