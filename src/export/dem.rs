@@ -214,9 +214,6 @@ pub struct Dem {
 /// Samples the DEM of `req` from the planet with base mesh `base` and its tree.
 pub fn sample_dem(tiles: &PlanetTiles, req: &DemRequest) -> Dem {
     let (w, h) = (req.width, req.height);
-    // The planet's face index, made (once per planet) before the blocks need it: made by the
-    // first block, it kept the other block's thread waiting.
-    tiles.index_faces();
     let blocks: Vec<(u32, u32)> =
         (0..h.div_ceil(BLOCK)).flat_map(|by| (0..w.div_ceil(BLOCK)).map(move |bx| (bx, by))).collect();
     let done: Vec<(Block, usize)> =
