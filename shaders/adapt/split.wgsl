@@ -416,33 +416,42 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     let sea = p.sea_level;
     let mid_ground = (va.ground + vb.ground) * p.half;
     let len = distance3(pos(s.a), pos(s.b));
-    if kind == KIND_SEA {
-        // As on the CPU: the elevation map's sea floor where it resolves the split edge.
-        // Below the map's pixel, the landform's detail at `sea_detail` of the land's
-        // (`sea_floor_ground`); off the map, the paper's rule.
+    if kind == KIND_SEA || kind == KIND_COAST {
+        // As on the CPU: under an elevation map, the sea floor's rule for sea and shore
+        // splits, on the side of sea level the map has at the new vertex (the coast follows
+        // the map's zero contour); the map's sea floor where it resolves the split edge, below
+        // its pixel the landform's detail at `sea_detail` of the land's (`guided_sea_floor`).
         let dir = normalize3(at);
         var mapped = Guided(false, 0.0lf);
         if p.guide_faces > 0u {
             mapped = guide_at(dir);
         }
-        var g: f64;
-        if mapped.found && len >= p.guide_min_edge {
-            g = sea + mapped.metres;
-        } else if mapped.found {
-            let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
-            let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-            // The corners' directions only where the bend is made (`Guide::bends`).
-            var bend = 0.0lf;
-            if len * 16.0lf >= p.guide_min_edge {
-                bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
+        if mapped.found {
+            var g: f64;
+            if len >= p.guide_min_edge {
+                g = sea + mapped.metres;
+            } else {
+                let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
+                let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
+                // The corners' directions only where the bend is made (`Guide::bends`).
+                var bend = 0.0lf;
+                if len * 16.0lf >= p.guide_min_edge {
+                    bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
+                }
+                g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
             }
-            g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
-        } else {
-            g = mid_ground + (xi - p.half) * sea_roughness(len);
+            if mapped.metres < 0.0lf {
+                g = min(g, sea - p.one);
+            } else {
+                g = max(g, sea + p.one);
+            }
+            return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
         }
-        return new_vertex(at, seed, min(g, sea - p.one), sea, FLAG_REFINED, 0u);
-    }
-    if kind == KIND_COAST {
+        if kind == KIND_SEA {
+            // Off the map, the paper's rule.
+            let g = mid_ground + (xi - p.half) * sea_roughness(len);
+            return new_vertex(at, seed, min(g, sea - p.one), sea, FLAG_REFINED, 0u);
+        }
         let rough = min(p.riverbed_edge_height, land_roughness(len));
         let g = clamp(mid_ground + (xi - p.half) * rough, sea - p.max_river_depth, sea + p.riverbed_edge_height);
         return new_vertex(at, seed, g, sea, FLAG_REFINED, 0u);
@@ -459,6 +468,11 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     var v = new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED | lake, 0u);
     v.bits |= tangent_code(tangent_along(triple(v.pos), triple(down.pos) - triple(up.pos)));
     return v;
+}
+
+// `at_sea`: in the sea or on its shore, at its level, and no river's or lake's.
+fn at_sea(v: Vertex) -> bool {
+    return (vertex_flags(v) & (FLAG_RIVER | FLAG_LAKE)) == 0u && v.water == p.sea_level && v.ground <= p.sea_level;
 }
 
 fn is_wet(v: Vertex) -> bool {
@@ -562,11 +576,24 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     if p.guide_faces > 0u {
         at_map = guide_at(at_unit);
     }
+    // As on the CPU: under a map, the sea is no riverbank, and a split the map puts under
+    // the sea beside the sea floods.
+    let sea = p.sea_level;
+    var by_sea = false;
+    if at_map.found {
+        for (var i = 0u; i < 4u; i++) {
+            by_sea = by_sea || at_sea(around[i]);
+        }
+    }
+    let floods = by_sea && p.sea_level + at_map.metres < sea;
     var holds: array<bool, 4>;
     for (var i = 0u; i < 4u; i++) {
-        holds[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map);
+        holds[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map) && !(by_sea && at_sea(around[i]));
     }
-    var bank_lo = p.sea_level + p.one;
+    var bank_lo = sea + p.one;
+    if floods {
+        bank_lo = -F64_MAX;
+    }
     var slope_lo = -F64_MAX;
     var any_lo = -F64_MAX;
     var hi = F64_MAX;
@@ -651,6 +678,10 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         if holds[i] {
             surface = max(surface, around[i].water);
         }
+    }
+    if floods {
+        g = min(g, sea - p.one);
+        surface = max(surface, sea);
     }
     var water = g;
     if g < surface {

@@ -316,14 +316,21 @@ pub fn ground_colour(mesh: &Mesh, palette: Palette, p: glam::DVec3, altitude_m: 
     climate_colour(palette, lat, altitude_m, precipitation_mm(mesh, lat, lon))
 }
 
+/// Whether vertex `v` of `mesh` is coloured as land: a land kind's vertex (rivers included),
+/// or a sea split's above sea level (under an elevation map the coast follows the map, not the
+/// base mesh's coast edges: `mesh/split/altitude.rs`).
+fn on_land(vert: &crate::mesh::Vertex, sea: f64) -> bool {
+    use crate::mesh::VertexFlags;
+    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
+    vert.flags.intersects(land) || vert.ground > sea
+}
+
 /// The colour a view or tile gives vertex `v` of `mesh` (sRGB): water by depth off land, the
 /// climate's ground colour on land (river vertices included).
 pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
-    use crate::mesh::VertexFlags;
-    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
     let vert = &mesh.vertices[v];
     let sea = params.sea_level_m;
-    if vert.flags.intersects(land) {
+    if on_land(vert, sea) {
         ground_colour(mesh, Palette::of(params), vert.p(), vert.ground - sea)
     } else {
         water_colour(sea - vert.ground)
@@ -333,11 +340,9 @@ pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
 /// [`vertex_colour`] on the vertex's slope: land whose unit `normal` (planet frame) is steep
 /// turns to bare rock ([`on_slope`]); water keeps its colour.
 pub fn surface_colour(mesh: &Mesh, params: &Params, v: usize, normal: glam::DVec3) -> [u8; 3] {
-    use crate::mesh::VertexFlags;
-    let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
     let vert = &mesh.vertices[v];
     let colour = vertex_colour(mesh, params, v);
-    if vert.flags.intersects(land) {
+    if on_land(vert, params.sea_level_m) {
         on_slope(colour, normal.normalize_or_zero().dot(vert.p().normalize_or_zero()))
     } else {
         colour

@@ -241,9 +241,10 @@ fn render(
 /// rivers' channel widths, as views draw it; 27: rivers on elevation maps no longer draining
 /// uphill; 28: the sea floor's detail below an elevation map's pixel by its landform; 29: a
 /// third tributary where every lower way out took two; 30: and a neighbour the flood reached
-/// later; 31: splits below an elevation map's pixel bent by its bicubic surface), so that
+/// later; 31: splits below an elevation map's pixel bent by its bicubic surface; 32: coasts
+/// that follow an elevation map's below the base mesh's coast edges), so that
 /// caches holding the old bytes under a strong, immutable `ETag` see a new one.
-pub const ANSWERS_REVISION: &str = "31";
+pub const ANSWERS_REVISION: &str = "32";
 
 /// Strong validator of one answer: the software version and answers' revision, id, route and
 /// normalised query.

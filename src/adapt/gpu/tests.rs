@@ -429,8 +429,10 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
     let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
     // Over the Caspian (a terminal lake), the Great Lakes and the Himalaya (splits that take
     // the map's ground).
-    // Over the Gulf of Mexico's shelf, sea splits below the map's pixel.
-    let cameras = [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4), (28.0, 86.0, 4e5), (28.5, -90.0, 3e4)];
+    // Over the Gulf of Mexico's shelf, sea splits below the map's pixel. Over the Gulf of
+    // Genoa, a coast that follows the map below the base mesh's coast edges: sea splits above
+    // sea level, land splits under the sea.
+    let cameras = [(42.0, 50.5, 2e5), (45.0, -84.0, 3e4), (28.0, 86.0, 4e5), (28.5, -90.0, 3e4), (44.0, 9.0, 3e4)];
     for (i, (lat, lon, height)) in cameras.into_iter().enumerate() {
         let dir = crate::geo::direction(lat, lon);
         let north = (DVec3::Z - dir * dir.z).normalize();
@@ -468,6 +470,21 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
                 .filter(|v| guide.at(v.p().normalize()).is_some_and(|m| (v.ground - sea - m).abs() > 1e-6))
                 .count();
             assert!(sea_floor > 100, "camera {i}: {sea_floor} sea floor vertices below the map's pixel");
+        }
+        if i == 4 {
+            let flags = |v: &crate::mesh::Vertex, kind: crate::mesh::VertexFlags| {
+                v.flags == crate::mesh::VertexFlags::REFINED | kind
+            };
+            let vertices = &cpu.mesh().vertices;
+            let dry_sea = vertices.iter().filter(|v| flags(v, crate::mesh::VertexFlags::SEA) && v.ground > sea).count();
+            let flooded = vertices
+                .iter()
+                .filter(|v| flags(v, crate::mesh::VertexFlags::CONTINENT) && v.water == sea && v.ground < sea)
+                .count();
+            assert!(
+                dry_sea > 20 && flooded > 20,
+                "camera {i}: {dry_sea} dry sea splits, {flooded} flooded land splits"
+            );
         }
         assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
     }

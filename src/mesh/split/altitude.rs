@@ -111,41 +111,35 @@ pub fn wet_vertex(
     let sea = p.sea_level_m;
     let mid_ground = (va.ground + vb.ground) * 0.5;
     let (ground, water, flags) = match edge.kind {
-        EdgeKind::Sea => {
+        EdgeKind::Sea | EdgeKind::Coast if guide.is_some() => {
+            // Under an elevation map, the shore is the map's: a sea or shore split takes the
+            // sea floor's rule below and stands on the side of sea level the map has at it,
+            // so that the coast follows the map's zero contour below the base mesh's coast
+            // edges (tens of kilometres long) instead of running along them.
             let len = d.edge_length();
             let dir = pos.normalize();
-            let g = match guide.and_then(|g| g.at(dir).map(|m| (g, m))) {
-                // The map resolves the split edge: its sea floor.
-                Some((g, m)) if len >= g.min_edge_m => sea + m,
-                // Below the map's pixel, the sea floor's detail follows its landform as the
-                // land's does: shelves and abyssal plains stay flat, continental slopes,
-                // ridges and trenches rough (the paper's 2 % of the edge everywhere put tens
-                // of metres of relief on flat shelves the map shows a few metres deep), bent
-                // as the map's smooth surface (`Guide::bend`).
-                Some((g, _)) => {
-                    let corners = [va, d.t(), vb, d.d()].map(|v| v.ground);
-                    let bend = if g.bends(len) {
-                        let [a, b, t, e] = corner_directions(d);
-                        g.bend(dir, [a, t, b, e], len)
+            let map = guide.expect("matched above");
+            let g = match map.at(dir) {
+                Some(m) => {
+                    let floor = guided_sea_floor(d, map, dir, len, m, seed, p);
+                    if m < 0.0 {
+                        floor.min(sea - 1.0)
                     } else {
-                        0.0
-                    };
-                    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m]) + bend
+                        floor.max(sea + 1.0)
+                    }
                 }
-                None => mid_ground + (xi - 0.5) * sea_roughness(len),
+                // Off a regional map, the rules without one.
+                None if edge.kind == EdgeKind::Sea => (mid_ground + (xi - 0.5) * sea_roughness(len)).min(sea - 1.0),
+                None => coast_ground(d, xi, p),
             };
-            (g.min(sea - 1.0), sea, VertexFlags::empty())
-        }
-        EdgeKind::Coast => {
-            // A shore point: the mean of its ends plus an offset of at most a riverbank's height
-            // that shrinks with the edge (refining a shore flattens it instead of keeping
-            // metre-high steps over ever shorter distances), no higher than a riverbank above
-            // sea level and no deeper than a river mouth's bed, so that the shore beside a mouth
-            // deepens towards it (an estuary) instead of standing as a wall over its bed.
-            let rough = p.riverbed_edge_height_m.min(land_roughness(d.edge_length()));
-            let g = (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m);
             (g, sea, VertexFlags::empty())
         }
+        EdgeKind::Sea => {
+            // Without a map, the paper's rule: the mean of the edge's ends plus a random offset.
+            let g = mid_ground + (xi - 0.5) * sea_roughness(d.edge_length());
+            (g.min(sea - 1.0), sea, VertexFlags::empty())
+        }
+        EdgeKind::Coast => (coast_ground(d, xi, p), sea, VertexFlags::empty()),
         _ => {
             let w = (va.water + vb.water) * 0.5;
             // Between two vertices under a lake, the river runs under it too.
@@ -163,6 +157,45 @@ pub fn wet_vertex(
         v.tangent = Tangent::new(tangent_along(v.p(), down.p() - up.p()));
     }
     (v, kinds)
+}
+
+/// The sea floor a split under an elevation map takes at unit direction `dir`, where the map
+/// reads `m` metres: the map's where it resolves the split edge; below its pixel, the
+/// landform's detail as the land's, shelves and abyssal plains flat, continental slopes,
+/// ridges and trenches rough (the paper's 2 % of the edge everywhere put tens of metres of
+/// relief on flat shelves the map shows a few metres deep), bent as the map's smooth surface
+/// (`Guide::bend`).
+fn guided_sea_floor(d: &Diamond, g: &Guide, dir: DVec3, len: f64, m: f64, seed: u32, p: &Params) -> f64 {
+    let sea = p.sea_level_m;
+    if len >= g.min_edge_m {
+        return sea + m;
+    }
+    let corners = [d.a(), d.t(), d.b(), d.d()].map(|v| v.ground);
+    let bend = if g.bends(len) {
+        let [a, b, t, e] = corner_directions(d);
+        g.bend(dir, [a, t, b, e], len)
+    } else {
+        0.0
+    };
+    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m]) + bend
+}
+
+/// A shore point without a map: the mean of its ends plus an offset of at most a riverbank's
+/// height that shrinks with the edge (refining a shore flattens it instead of keeping
+/// metre-high steps over ever shorter distances), no higher than a riverbank above sea level
+/// and no deeper than a river mouth's bed, so that the shore beside a mouth deepens towards it
+/// (an estuary) instead of standing as a wall over its bed.
+fn coast_ground(d: &Diamond, xi: f64, p: &Params) -> f64 {
+    let sea = p.sea_level_m;
+    let mid_ground = (d.a().ground + d.b().ground) * 0.5;
+    let rough = p.riverbed_edge_height_m.min(land_roughness(d.edge_length()));
+    (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m)
+}
+
+/// Whether `v` stands in the sea (or on its shore, at its level): its water is the sea's and
+/// no river's or lake's, and the ground is at most at sea level.
+pub fn at_sea(v: &Vertex, sea: f64) -> bool {
+    !v.flags.intersects(VertexFlags(VertexFlags::RIVER.0 | VertexFlags::LAKE.0)) && v.water == sea && v.ground <= sea
 }
 
 /// A continent split: ground altitude by midpoint displacement kept inside the riverbed bounds
@@ -199,7 +232,13 @@ fn continent_vertex(
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
     // Under an elevation map, a river's bank gives way where the map shows lower ground.
     let at_map = guide.and_then(|g| g.at(dir)).map(|m| p.sea_level_m + m);
-    let holds = |v: &Vertex, le: f64| is_wet(v) && !bank_gives_way(v, le, at_map, p);
+    // Under a map, the sea is no riverbank, and a split the map puts under the sea beside the
+    // sea (or its shore) is under it: a bay the map has inside a land face of the base mesh
+    // floods from its shore (an inland depression below sea level stays dry).
+    let sea = p.sea_level_m;
+    let by_sea = at_map.is_some() && around.iter().any(|v| at_sea(v, sea));
+    let floods = by_sea && at_map.is_some_and(|m| m < sea);
+    let holds = |v: &Vertex, le: f64| is_wet(v) && !bank_gives_way(v, le, at_map, p) && !(by_sea && at_sea(v, sea));
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
     // sea level. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
@@ -207,7 +246,7 @@ fn continent_vertex(
     // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
     // could stand any height above its river, and splitting such a wall copies its height to
     // the new vertex on the dry side, so the wall never shortens and refines without end.
-    let mut bank_lo = p.sea_level_m + 1.0;
+    let mut bank_lo = if floods { f64::MIN } else { sea + 1.0 };
     let mut slope_lo = f64::MIN;
     let mut any_lo = f64::MIN;
     let mut hi = f64::MAX;
@@ -290,6 +329,7 @@ fn continent_vertex(
     // lower.)
     let surface =
         around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
+    let (g, surface) = if floods { (g.min(sea - 1.0), surface.max(sea)) } else { (g, surface) };
     let water = if g < surface { surface } else { g };
     let mut v = Vertex::new(lifted(g), seed);
     v.ground = g;
@@ -409,6 +449,41 @@ mod tests {
         let (deepest, steep) = spread([500.0, 1_000.0, 1_500.0, 1_000.0], Some(&shelf));
         assert!(steep > 20.0 * flat.max(1.0), "a slope spreads {steep} m against the shelf's {flat} m");
         assert!(deepest > -1_600.0, "{deepest}");
+    }
+
+    #[test]
+    fn under_a_map_the_coast_follows_the_map() {
+        let p = Params::earth();
+        let sea = p.sea_level_m;
+        // Sea splits (corners 60 m deep) where the map shows land 50 m up stand above sea level,
+        // dry; where it shows sea, below it.
+        let land = flat_map(&p, 50.0);
+        for seed in 0..50 {
+            assert!(sea_split(&p, [60.0; 4], Some(&land), seed) >= 1.0, "seed {seed}");
+            assert!(sea_split(&p, [60.0; 4], Some(&flat_map(&p, -5.0)), seed) <= -1.0, "seed {seed}");
+        }
+        // Without a map, the sea floor stays under the sea.
+        assert!(sea_split(&p, [60.0; 4], None, 7) <= -1.0);
+        // A land split beside the sea (`a` under it, at its level) where the map shows the sea
+        // floor 30 m down floods at sea level; one whose corners are all dry stays dry, above
+        // sea level (a depression the sea does not reach).
+        let mut d = beside_a_river(&p, 0.0);
+        for v in &mut d.corners {
+            v.ground = sea + 5.0;
+            v.water = v.ground;
+        }
+        let dry = d;
+        d.corners[0].flags = crate::mesh::VertexFlags::SEA;
+        d.corners[0].ground = sea - 20.0;
+        d.corners[0].water = sea;
+        let bay = flat_map(&p, -30.0);
+        let (v, _) = split_vertex(&d, &p, Some(&bay));
+        assert!(v.ground <= sea - 1.0 && v.water == sea, "{} / {}", v.ground - sea, v.water - sea);
+        let (v, _) = split_vertex(&dry, &p, Some(&bay));
+        assert!(v.ground >= sea + 1.0 && v.water == v.ground, "{} / {}", v.ground - sea, v.water - sea);
+        // Where the map shows land, the split beside the sea is land.
+        let (v, _) = split_vertex(&d, &p, Some(&flat_map(&p, 20.0)));
+        assert!(v.ground >= sea + 1.0 && v.water == v.ground, "{}", v.ground - sea);
     }
 
     #[test]
