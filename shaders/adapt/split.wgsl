@@ -428,10 +428,14 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
         }
         if mapped.found {
             var g: f64;
+            let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
             if len >= p.guide_min_edge {
                 g = sea + mapped.metres;
+            } else if straddles(s) {
+                // On a shore, the map's ground plus the landform's offset (`straddles`).
+                let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
+                g = (sea + mapped.metres) + shore_offset(p.sea_detail * parts.offset, mapped.metres);
             } else {
-                let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
                 let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
                 // The corners' directions only where the bend is made (`Guide::bends`).
                 var bend = 0.0lf;
@@ -468,6 +472,24 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     var v = new_vertex(at, seed, min(mid_ground, w), w, FLAG_RIVER | FLAG_REFINED | lake, 0u);
     v.bits |= tangent_code(tangent_along(triple(v.pos), triple(down.pos) - triple(up.pos)));
     return v;
+}
+
+// `straddles`: the diamond's corners on both sides of sea level.
+fn straddles(s: Site) -> bool {
+    let g = array<f64, 4>(vertices[s.a].ground, vertices[s.t].ground, vertices[s.b].ground, vertices[s.d].ground);
+    var above = false;
+    var below = false;
+    for (var i = 0u; i < 4u; i++) {
+        above = above || g[i] > p.sea_level;
+        below = below || g[i] <= p.sea_level;
+    }
+    return above && below;
+}
+
+// `shore_offset`: the landform's offset at a shore split, within half the map's height.
+fn shore_offset(offset: f64, m: f64) -> f64 {
+    let reach = 0.5lf * abs(m);
+    return clamp(offset, -reach, reach);
 }
 
 // `at_sea`: in the sea or on its shore, at its level, and no river's or lake's.
@@ -651,6 +673,10 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     var wanted: f64;
     if edge_len >= p.guide_min_edge && at_map.found {
         wanted = p.sea_level + at_map.metres;
+    } else if at_map.found && straddles(s) {
+        // As on the CPU: on a shore, the map's ground plus the landform's offset.
+        let parts = landform_parts(grounds, edge_len, seed, guide_twist(at_unit), p.guide_min_edge);
+        wanted = (p.sea_level + at_map.metres) + shore_offset(parts.offset, at_map.metres);
     } else {
         var map_relief = 0.0lf;
         var map_pixel = 0.0lf;

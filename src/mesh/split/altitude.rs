@@ -5,7 +5,7 @@
 //! Everything here is a function of the split's diamond (its edge, faces and four corners) and
 //! the new vertex's seed, so the same edge always yields the same vertex.
 
-use super::landform::{landform_ground, sea_floor_ground};
+use super::landform::{landform_ground, landform_parts, sea_floor_ground, SEA_DETAIL};
 use super::position::{
     altitude_random, corner_directions, lift, split_position, split_seed, tangent_along, tangent_towards,
     weighted_position, well_shaped_towards,
@@ -171,13 +171,18 @@ fn guided_sea_floor(d: &Diamond, g: &Guide, dir: DVec3, len: f64, m: f64, seed: 
         return sea + m;
     }
     let corners = [d.a(), d.t(), d.b(), d.d()].map(|v| v.ground);
+    let map = [g.relief_at(dir), g.min_edge_m];
+    if straddles(d, sea) {
+        let [_, _, offset] = landform_parts(corners, len, seed, sea, p.ground_slope(), map);
+        return (sea + m) + shore_offset(SEA_DETAIL * offset, m);
+    }
     let bend = if g.bends(len) {
         let [a, b, t, e] = corner_directions(d);
         g.bend(dir, [a, t, b, e], len)
     } else {
         0.0
     };
-    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), [g.relief_at(dir), g.min_edge_m]) + bend
+    sea_floor_ground(corners, len, seed, sea, p.ground_slope(), map) + bend
 }
 
 /// A shore point without a map: the mean of its ends plus an offset of at most a riverbank's
@@ -190,6 +195,27 @@ fn coast_ground(d: &Diamond, xi: f64, p: &Params) -> f64 {
     let mid_ground = (d.a().ground + d.b().ground) * 0.5;
     let rough = p.riverbed_edge_height_m.min(land_roughness(d.edge_length()));
     (mid_ground + (xi - 0.5) * rough).clamp(sea - p.max_river_depth_m, sea + p.riverbed_edge_height_m)
+}
+
+/// Whether the diamond's corners lie on both sides of sea level (some above it, some at or
+/// below it): a split there, under an elevation map, takes the map's ground plus the
+/// landform's random offset (not the diamond's mean, its ridge term or the map's bend), so
+/// that the shore between the vertices, interpolated, runs where the map's does (from the
+/// diamond's mean, a vertex a few metres from the shore on the map could stand hundreds of
+/// metres off it, kept on its side of sea level at 1 m, and the shore snapped to the vertices
+/// in a sawtooth).
+fn straddles(d: &Diamond, sea: f64) -> bool {
+    let corners = [d.a(), d.t(), d.b(), d.d()];
+    corners.iter().any(|v| v.ground > sea) && corners.iter().any(|v| v.ground <= sea)
+}
+
+/// The landform's `offset` at a shore split where the map reads `m` metres: within half the
+/// map's height above (or depth below) sea level, so that the detail fades towards the shore
+/// and no vertex near it jumps across sea level (pinned there at 1 m, the shore between it and
+/// its neighbours zigzagged with the vertices).
+pub fn shore_offset(offset: f64, m: f64) -> f64 {
+    let reach = 0.5 * m.abs();
+    offset.clamp(-reach, reach)
 }
 
 /// Whether `v` stands in the sea (or on its shore, at its level): its water is the sea's and
@@ -231,7 +257,8 @@ fn continent_vertex(
     }
     let is_wet = |v: &Vertex| v.flags.contains(VertexFlags::RIVER) || v.submerged();
     // Under an elevation map, a river's bank gives way where the map shows lower ground.
-    let at_map = guide.and_then(|g| g.at(dir)).map(|m| p.sea_level_m + m);
+    let map_m = guide.and_then(|g| g.at(dir));
+    let at_map = map_m.map(|m| p.sea_level_m + m);
     // Under a map, the sea is no riverbank, and a split the map puts under the sea beside the
     // sea (or its shore) is under it: a bay the map has inside a land face of the base mesh
     // floods from its shore (an inland depression below sea level stays dry).
@@ -298,6 +325,13 @@ fn continent_vertex(
     let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and(at_map);
     let wanted = match mapped {
         Some(m) => m,
+        // On a shore (`straddles`), the map's ground plus the landform's offset.
+        None if map_m.is_some() && straddles(d, sea) => {
+            let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
+            let [_, _, offset] = landform_parts(around.map(|v| v.ground), edge_len, seed, sea, p.ground_slope(), map);
+            let m = map_m.expect("matched above");
+            (sea + m) + shore_offset(offset, m)
+        }
         None => {
             let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
             let ground =

@@ -135,7 +135,7 @@ pub fn sea_floor_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slo
 
 /// [`landform_ground`]'s terms: the diamond's mean, the ridge term and the random offset
 /// (triangular: the sum of two uniforms).
-fn landform_parts(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64, map: [f64; 2]) -> [f64; 3] {
+pub fn landform_parts(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64, map: [f64; 2]) -> [f64; 3] {
     let (range, mean, threshold) = landform_range(g, edge_len, sea, max_slope, map);
     let [a, t, b, d] = g;
     let ridge = (a + b) * 0.5 - (t + d) * 0.5;
