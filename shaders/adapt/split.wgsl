@@ -408,6 +408,28 @@ fn new_vertex(at: vec3<f64>, seed: u32, ground: f64, water: f64, flags: u32, tan
     return Vertex(array<f64, 3>(q.x, q.y, q.z), ground, water, NONE, 0u, seed, tangent | (flags << 24u));
 }
 
+// `guided_sea_floor`: the sea floor under an elevation map reading `metres` at `dir`: the
+// map's where it resolves the split edge; on a shore (`straddles`) the map's plus the
+// landform's offset; below its pixel the landform's detail at `sea_detail` of the land's.
+fn guided_sea_floor(s: Site, seed: u32, dir: vec3<f64>, len: f64, metres: f64) -> f64 {
+    let sea = p.sea_level;
+    let corners = array<f64, 4>(vertices[s.a].ground, vertices[s.t].ground, vertices[s.b].ground, vertices[s.d].ground);
+    if len >= p.guide_min_edge {
+        return sea + metres;
+    }
+    if straddles(s) {
+        let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
+        return (sea + metres) + shore_offset(p.sea_detail * parts.offset, metres);
+    }
+    let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
+    // The corners' directions only where the bend is made (`Guide::bends`).
+    var bend = 0.0lf;
+    if len * 16.0lf >= p.guide_min_edge {
+        bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
+    }
+    return (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
+}
+
 // `wet_vertex`: sea floor, shore, or river interpolated.
 fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
     let va = vertices[s.a];
@@ -427,23 +449,7 @@ fn wet_vertex(s: Site, seed: u32, at: vec3<f64>, kind: u32) -> Vertex {
             mapped = guide_at(dir);
         }
         if mapped.found {
-            var g: f64;
-            let corners = array<f64, 4>(va.ground, vertices[s.t].ground, vb.ground, vertices[s.d].ground);
-            if len >= p.guide_min_edge {
-                g = sea + mapped.metres;
-            } else if straddles(s) {
-                // On a shore, the map's ground plus the landform's offset (`straddles`).
-                let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-                g = (sea + mapped.metres) + shore_offset(p.sea_detail * parts.offset, mapped.metres);
-            } else {
-                let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
-                // The corners' directions only where the bend is made (`Guide::bends`).
-                var bend = 0.0lf;
-                if len * 16.0lf >= p.guide_min_edge {
-                    bend = guide_bend(dir, normalize3(pos(s.a)), normalize3(pos(s.t)), normalize3(pos(s.b)), normalize3(pos(s.d)), len);
-                }
-                g = (parts.mean + p.sea_detail * (parts.ridge + parts.offset)) + bend;
-            }
+            var g = guided_sea_floor(s, seed, dir, len, mapped.metres);
             if mapped.metres < 0.0lf {
                 g = min(g, sea - p.one);
             } else {
@@ -613,9 +619,6 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         holds[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map) && !(by_sea && at_sea(around[i]));
     }
     var bank_lo = sea + p.one;
-    if floods {
-        bank_lo = -F64_MAX;
-    }
     var slope_lo = -F64_MAX;
     var any_lo = -F64_MAX;
     var hi = F64_MAX;
@@ -638,6 +641,18 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         return Made(new_vertex(at, seed, g, surface, FLAG_LAKE | FLAG_REFINED, 0u), kinds);
     }
     let edge_len = distance3(pos(s.a), pos(s.b));
+
+    // As on the CPU: a flooded split is a sea split, without the land's slope bounds.
+    if floods {
+        let g = min(guided_sea_floor(s, seed, at_unit, edge_len, at_map.metres), sea - p.one);
+        var surface = sea;
+        for (var i = 0u; i < 4u; i++) {
+            if holds[i] {
+                surface = max(surface, around[i].water);
+            }
+        }
+        return Made(new_vertex(at, seed, g, surface, FLAG_REFINED, 0u), kinds);
+    }
 
     if edge_len >= p.min_river_length {
         var cap = F64_MAX;
@@ -704,10 +719,6 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
         if holds[i] {
             surface = max(surface, around[i].water);
         }
-    }
-    if floods {
-        g = min(g, sea - p.one);
-        surface = max(surface, sea);
     }
     var water = g;
     if g < surface {

@@ -273,7 +273,7 @@ fn continent_vertex(
     // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
     // could stand any height above its river, and splitting such a wall copies its height to
     // the new vertex on the dry side, so the wall never shortens and refines without end.
-    let mut bank_lo = if floods { f64::MIN } else { sea + 1.0 };
+    let mut bank_lo = sea + 1.0;
     let mut slope_lo = f64::MIN;
     let mut any_lo = f64::MIN;
     let mut hi = f64::MAX;
@@ -288,6 +288,20 @@ fn continent_vertex(
         hi = hi.min(v.ground + le * p.ground_slope());
     }
     let edge_len = d.edge_length();
+
+    // A flooded split is a sea split: the sea floor's rule (the map's ground, or below its pixel
+    // the sea's landform from the corners, bent as the map's surface), under sea level, without
+    // the land's slope bounds (with them, the land's mean: a base land face reaching over the
+    // map's deep sea flooded a metre deep, 1-2 km above the sea floor the map shows).
+    if let (true, Some(map), Some(m)) = (floods, guide, map_m) {
+        let g = guided_sea_floor(d, map, dir, edge_len, m, seed, p).min(sea - 1.0);
+        let surface = around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(sea, f64::max);
+        let mut v = Vertex::new(lifted(g), seed);
+        v.ground = g;
+        v.water = surface;
+        v.flags = VertexFlags::REFINED;
+        return (v, kinds);
+    }
 
     // Eq. 10: a new river arm, when the split edge and the new edge to a river vertex are both
     // at least l_rmin long and an altitude exists above that river (by s_r) yet below every dry
@@ -363,7 +377,6 @@ fn continent_vertex(
     // lower.)
     let surface =
         around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
-    let (g, surface) = if floods { (g.min(sea - 1.0), surface.max(sea)) } else { (g, surface) };
     let water = if g < surface { surface } else { g };
     let mut v = Vertex::new(lifted(g), seed);
     v.ground = g;
