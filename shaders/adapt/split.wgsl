@@ -613,10 +613,14 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
             by_sea = by_sea || at_sea(around[i]);
         }
     }
-    let floods = by_sea && p.sea_level + at_map.metres < sea;
+    let floods = by_sea && at_map.metres < 0.0lf;
+    // `covers`: wet neighbours whose water covers the vertex below it (the sea too); `holds`:
+    // those whose banks bound it (not the sea's, under a map).
+    var covers: array<bool, 4>;
     var holds: array<bool, 4>;
     for (var i = 0u; i < 4u; i++) {
-        holds[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map) && !(by_sea && at_sea(around[i]));
+        covers[i] = is_wet(around[i]) && !bank_gives_way(around[i], lens[i], at_map);
+        holds[i] = covers[i] && !(by_sea && at_sea(around[i]));
     }
     var bank_lo = sea + p.one;
     var slope_lo = -F64_MAX;
@@ -645,13 +649,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     // As on the CPU: a flooded split is a sea split, without the land's slope bounds.
     if floods {
         let g = min(guided_sea_floor(s, seed, at_unit, edge_len, at_map.metres), sea - p.one);
-        var surface = sea;
-        for (var i = 0u; i < 4u; i++) {
-            if holds[i] {
-                surface = max(surface, around[i].water);
-            }
-        }
-        return Made(new_vertex(at, seed, g, surface, FLAG_REFINED, 0u), kinds);
+        return Made(new_vertex(at, seed, g, sea, FLAG_REFINED, 0u), kinds);
     }
 
     if edge_len >= p.min_river_length {
@@ -688,7 +686,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     var wanted: f64;
     if edge_len >= p.guide_min_edge && at_map.found {
         wanted = p.sea_level + at_map.metres;
-    } else if at_map.found && straddles(s) {
+    } else if at_map.found && by_sea && straddles(s) {
         // As on the CPU: on a shore, the map's ground plus the landform's offset.
         let parts = landform_parts(grounds, edge_len, seed, guide_twist(at_unit), p.guide_min_edge);
         wanted = (p.sea_level + at_map.metres) + shore_offset(parts.offset, at_map.metres);
@@ -716,7 +714,7 @@ fn continent_vertex(s: Site, seed: u32, at: vec3<f64>, kinds_in: array<u32, 4>) 
     }
     var surface = F64_MIN;
     for (var i = 0u; i < 4u; i++) {
-        if holds[i] {
+        if covers[i] {
             surface = max(surface, around[i].water);
         }
     }

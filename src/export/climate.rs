@@ -316,13 +316,18 @@ pub fn ground_colour(mesh: &Mesh, palette: Palette, p: glam::DVec3, altitude_m: 
     climate_colour(palette, lat, altitude_m, precipitation_mm(mesh, lat, lon))
 }
 
-/// Whether vertex `v` of `mesh` is coloured as land: a land kind's vertex (rivers included),
-/// or a sea split's above sea level (under an elevation map the coast follows the map, not the
-/// base mesh's coast edges: `mesh/split/altitude.rs`).
-fn on_land(vert: &crate::mesh::Vertex, sea: f64) -> bool {
+/// Whether vertex `v` of `mesh` is coloured as land: a land kind's vertex (rivers included)
+/// unless, under an elevation map, it lies in the sea (a land or shore split the map put under
+/// it), or a sea split's above sea level. (Under an elevation map the coast follows the map,
+/// not the base mesh's coast edges: `mesh/split/altitude.rs`.)
+fn on_land(mesh: &Mesh, vert: &crate::mesh::Vertex, sea: f64) -> bool {
     use crate::mesh::VertexFlags;
     let land = VertexFlags(VertexFlags::COAST.0 | VertexFlags::CONTINENT.0 | VertexFlags::RIVER.0);
-    vert.flags.intersects(land) || vert.ground > sea
+    if vert.ground > sea {
+        return true;
+    }
+    let in_sea = mesh.guide.is_some() && crate::mesh::split::altitude::at_sea(vert, sea);
+    vert.flags.intersects(land) && !in_sea
 }
 
 /// The colour a view or tile gives vertex `v` of `mesh` (sRGB): water by depth off land, the
@@ -330,7 +335,7 @@ fn on_land(vert: &crate::mesh::Vertex, sea: f64) -> bool {
 pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
     let vert = &mesh.vertices[v];
     let sea = params.sea_level_m;
-    if on_land(vert, sea) {
+    if on_land(mesh, vert, sea) {
         ground_colour(mesh, Palette::of(params), vert.p(), vert.ground - sea)
     } else {
         water_colour(sea - vert.ground)
@@ -342,7 +347,7 @@ pub fn vertex_colour(mesh: &Mesh, params: &Params, v: usize) -> [u8; 3] {
 pub fn surface_colour(mesh: &Mesh, params: &Params, v: usize, normal: glam::DVec3) -> [u8; 3] {
     let vert = &mesh.vertices[v];
     let colour = vertex_colour(mesh, params, v);
-    if on_land(vert, params.sea_level_m) {
+    if on_land(mesh, vert, params.sea_level_m) {
         on_slope(colour, normal.normalize_or_zero().dot(vert.p().normalize_or_zero()))
     } else {
         colour

@@ -415,18 +415,25 @@ fn a_planet_with_other_parameters_adapts_alike() {
     }
 }
 
-#[test]
-fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
-    let Ok(bytes) = std::fs::read("maps/earth_etopo5_1024x512.tif") else { return };
+/// The planet of the elevation map in the file at `path` (if it is there) with the default
+/// parameters and `seed`, and an adapter on each backend.
+fn from_map_file(path: &str, seed: u64) -> Option<(Planet, Params, Adapter, Adapter)> {
+    let bytes = std::fs::read(path).ok()?;
     let limits = crate::maps::MapLimits::default();
     let map = crate::maps::Map::decode(&bytes, crate::maps::MapKind::Elevation, None, None, &limits).unwrap();
     let params = Params::default();
-    let spec = PlanetSpec { seed: 42, params: params.clone(), map: Some(Arc::new(map)), precipitation: None };
+    let spec = PlanetSpec { seed, params: params.clone(), map: Some(Arc::new(map)), precipitation: None };
     let planet = build_planet(&spec, &mut |_, _| {}).unwrap();
+    let cpu = Adapter::new(planet.mesh.clone(), params.clone());
+    let dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
+    Some((planet, params, cpu, dev))
+}
+
+#[test]
+fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
+    let Some((planet, params, mut cpu, mut dev)) = from_map_file("maps/earth_etopo5_1024x512.tif", 42) else { return };
     let guide = planet.mesh.guide.clone().expect("an elevation map guides the splits");
     let r = params.radius_m;
-    let mut cpu = Adapter::new(planet.mesh.clone(), params.clone());
-    let mut dev = Adapter::new(planet.mesh.clone(), params.clone()).with_gpu(Some(gpu()));
     // Over the Caspian (a terminal lake), the Great Lakes and the Himalaya (splits that take
     // the map's ground).
     // Over the Gulf of Mexico's shelf, sea splits below the map's pixel. Over the Gulf of
@@ -495,4 +502,42 @@ fn a_planet_from_an_elevation_map_with_lakes_adapts_alike() {
 #[test]
 fn the_device_reproduces_the_cpus_canary() {
     assert!(reproduces_cpu(&gpu()).unwrap());
+}
+
+/// A regional elevation map: splits inside it follow the map (its coast, in the shore outside
+/// its bounds, too), splits beyond the data the guide holds take the rules without a map, and
+/// both backends agree on all of them.
+#[test]
+fn a_regional_map_adapts_alike_at_its_edge() {
+    let Some((planet, params, mut cpu, mut dev)) = from_map_file("maps/region_jacksboro_tn_403x344.tif", 5) else {
+        return;
+    };
+    let guide = planet.mesh.guide.clone().expect("an elevation map guides the splits");
+    let r = params.radius_m;
+    // Inside the map near its eastern edge looking east across it, and beyond it looking back.
+    for (i, (lat, lon, height, ahead)) in
+        [(36.59, -84.13, 6e3, 0.01), (36.59, -84.03, 6e3, -0.01)].into_iter().enumerate()
+    {
+        let dir = crate::geo::direction(lat, lon);
+        let east = DVec3::Z.cross(dir).normalize();
+        let target = (dir + east * ahead).normalize() * r;
+        let cam = Camera::new(dir * (r + height), target, None, 60.0, 320, 180, 3.0, 15.0, r).unwrap();
+        // Room for the view without coarsening it (the backends count the splits of abandoned
+        // trials apart).
+        let budget = Some(planet.mesh.faces.len() + 40_000);
+        let (a, b) = (cpu.adapt(&cam, budget), dev.adapt(&cam, budget));
+        assert!(dev.on_gpu(), "camera {i}: the GPU backend fell back to the CPU");
+        assert_eq!((a.faces, a.splits, a.collapses), (b.faces, b.splits, b.collapses), "camera {i}");
+        let refined = cpu.mesh().vertices.iter().filter(|v| v.flags.contains(crate::mesh::VertexFlags::REFINED));
+        let (on, off): (Vec<&crate::mesh::Vertex>, Vec<_>) =
+            refined.partition(|v| guide.at(v.p().normalize()).is_some());
+        assert!(
+            on.len() > 100 && off.len() > 100,
+            "camera {i}: {} splits on the map, {} off it ({a:?}, base {} faces)",
+            on.len(),
+            off.len(),
+            planet.mesh.faces.len()
+        );
+        assert_same_mesh(cpu.mesh(), dev.mesh(), &format!("camera {i}"));
+    }
 }

@@ -94,9 +94,10 @@ pub fn split_vertex(d: &Diamond, p: &Params, guide: Option<&Guide>) -> (Vertex, 
     }
 }
 
-/// Sea, coast and river splits (§5.3 step 6): the sea floor (from the planet's elevation map
-/// where it resolves the split edge, else by midpoint displacement) below sea level, a coast
-/// point near sea level, or the river interpolated between its ends.
+/// Sea, coast and river splits (§5.3 step 6): the sea floor below sea level and a coast point
+/// near it by midpoint displacement, or, under an elevation map, both by the sea floor's rule
+/// (`guided_sea_floor`) on the side of sea level the map has at the new vertex (a sea split may
+/// stand dry above it); or the river interpolated between its ends.
 pub fn wet_vertex(
     d: &Diamond,
     p: &Params,
@@ -115,7 +116,7 @@ pub fn wet_vertex(
             // Under an elevation map, the shore is the map's: a sea or shore split takes the
             // sea floor's rule below and stands on the side of sea level the map has at it,
             // so that the coast follows the map's zero contour below the base mesh's coast
-            // edges (tens of kilometres long) instead of running along them.
+            // edges (tens to hundreds of kilometres long) instead of running along them.
             let len = d.edge_length();
             let dir = pos.normalize();
             let map = guide.expect("matched above");
@@ -160,11 +161,12 @@ pub fn wet_vertex(
 }
 
 /// The sea floor a split under an elevation map takes at unit direction `dir`, where the map
-/// reads `m` metres: the map's where it resolves the split edge; below its pixel, the
-/// landform's detail as the land's, shelves and abyssal plains flat, continental slopes,
-/// ridges and trenches rough (the paper's 2 % of the edge everywhere put tens of metres of
-/// relief on flat shelves the map shows a few metres deep), bent as the map's smooth surface
-/// (`Guide::bend`).
+/// reads `m` metres (sea, shore and flooded land splits): the map's where it resolves the split
+/// edge; on a shore ([`straddles`]) the map's plus the landform's offset within
+/// [`shore_offset`]; elsewhere below its pixel, the landform's detail at [`SEA_DETAIL`] of the
+/// land's, shelves and abyssal plains flat, continental slopes, ridges and trenches rough (the
+/// paper's 2 % of the edge everywhere put tens of metres of relief on flat shelves the map
+/// shows a few metres deep), bent as the map's smooth surface (`Guide::bend`).
 fn guided_sea_floor(d: &Diamond, g: &Guide, dir: DVec3, len: f64, m: f64, seed: u32, p: &Params) -> f64 {
     let sea = p.sea_level_m;
     if len >= g.min_edge_m {
@@ -226,7 +228,8 @@ pub fn at_sea(v: &Vertex, sea: f64) -> bool {
 
 /// A continent split: ground altitude by midpoint displacement kept inside the riverbed bounds
 /// (eq. 11) and the maximum ground slope (eq. 12); or, where the rules allow it, the spring of a
-/// new river arm flowing into a neighbouring river vertex (eq. 10).
+/// new river arm flowing into a neighbouring river vertex (eq. 10); or, under an elevation map
+/// that shows the sea there beside the sea, a flooded sea-floor vertex (`guided_sea_floor`).
 fn continent_vertex(
     d: &Diamond,
     p: &Params,
@@ -263,12 +266,15 @@ fn continent_vertex(
     // sea (or its shore) is under it: a bay the map has inside a land face of the base mesh
     // floods from its shore (an inland depression below sea level stays dry).
     let sea = p.sea_level_m;
-    let by_sea = at_map.is_some() && around.iter().any(|v| at_sea(v, sea));
-    let floods = by_sea && at_map.is_some_and(|m| m < sea);
-    let holds = |v: &Vertex, le: f64| is_wet(v) && !bank_gives_way(v, le, at_map, p) && !(by_sea && at_sea(v, sea));
+    let by_sea = map_m.is_some() && around.iter().any(|v| at_sea(v, sea));
+    let floods = by_sea && map_m.is_some_and(|m| m < 0.0);
+    // A wet neighbour whose water covers the new vertex if it lies below it (the sea too), and
+    // the ones whose banks bound it from below (not the sea's, under a map).
+    let covers = |v: &Vertex, le: f64| is_wet(v) && !bank_gives_way(v, le, at_map, p);
+    let holds = |v: &Vertex, le: f64| covers(v, le) && !(by_sea && at_sea(v, sea));
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
-    // sea level. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
+    // sea level unless the slope bound wins. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
     // minimum would leave a bank under a higher river's floor). Beyond the paper, the ground may not rise faster than s_g from a wet
     // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
     // could stand any height above its river, and splitting such a wall copies its height to
@@ -295,10 +301,9 @@ fn continent_vertex(
     // map's deep sea flooded a metre deep, 1-2 km above the sea floor the map shows).
     if let (true, Some(map), Some(m)) = (floods, guide, map_m) {
         let g = guided_sea_floor(d, map, dir, edge_len, m, seed, p).min(sea - 1.0);
-        let surface = around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(sea, f64::max);
         let mut v = Vertex::new(lifted(g), seed);
         v.ground = g;
-        v.water = surface;
+        v.water = sea;
         v.flags = VertexFlags::REFINED;
         return (v, kinds);
     }
@@ -334,13 +339,14 @@ fn continent_vertex(
         }
     }
 
-    // Where the planet's elevation map resolves the split edge, its ground; below that (or
-    // without a map), the neighbours' mean plus a random offset.
+    // Where the planet's elevation map resolves the split edge, its ground; on a shore beside
+    // the sea, its ground plus a bounded offset; elsewhere below its pixel (or without a map),
+    // the neighbours' mean plus the landform's offset.
     let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and(at_map);
     let wanted = match mapped {
         Some(m) => m,
         // On a shore (`straddles`), the map's ground plus the landform's offset.
-        None if map_m.is_some() && straddles(d, sea) => {
+        None if map_m.is_some() && by_sea && straddles(d, sea) => {
             let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
             let [_, _, offset] = landform_parts(around.map(|v| v.ground), edge_len, seed, sea, p.ground_slope(), map);
             let m = map_m.expect("matched above");
@@ -376,7 +382,7 @@ fn continent_vertex(
     // water levels, which leaves a vertex below one river's surface dry when the others are
     // lower.)
     let surface =
-        around.iter().zip(lens).filter(|(v, le)| holds(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
+        around.iter().zip(lens).filter(|(v, le)| covers(v, *le)).map(|(v, _)| v.water).fold(f64::MIN, f64::max);
     let water = if g < surface { surface } else { g };
     let mut v = Vertex::new(lifted(g), seed);
     v.ground = g;

@@ -126,8 +126,9 @@ pub fn landform_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slop
     mean + ridge + offset
 }
 
-/// The sea floor wanted at a sea split below the map's resolution (under an elevation map):
-/// the diamond's mean plus the land's ridge term and offset at [`SEA_DETAIL`] of their size.
+/// The sea floor wanted below the map's resolution (under an elevation map) at a sea or shore
+/// split off the shore, or a land split the sea floods: the diamond's mean plus the land's ridge
+/// term and offset at [`SEA_DETAIL`] of their size.
 pub fn sea_floor_ground(g: [f64; 4], edge_len: f64, seed: u32, sea: f64, max_slope: f64, map: [f64; 2]) -> f64 {
     let [mean, ridge, offset] = landform_parts(g, edge_len, seed, sea, max_slope, map);
     mean + SEA_DETAIL * (ridge + offset)
