@@ -417,11 +417,10 @@ fn guided_sea_floor(s: Site, seed: u32, dir: vec3<f64>, len: f64, metres: f64) -
     if len >= p.guide_min_edge {
         return sea + metres;
     }
+    let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
     if straddles(s) {
-        let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
         return (sea + metres) + shore_offset(p.sea_detail * parts.offset, metres);
     }
-    let parts = landform_parts(corners, len, seed, guide_twist(dir), p.guide_min_edge);
     // The corners' directions only where the bend is made (`Guide::bends`).
     var bend = 0.0lf;
     if len * 16.0lf >= p.guide_min_edge {

@@ -112,35 +112,33 @@ pub fn wet_vertex(
     let sea = p.sea_level_m;
     let mid_ground = (va.ground + vb.ground) * 0.5;
     let (ground, water, flags) = match edge.kind {
-        EdgeKind::Sea | EdgeKind::Coast if guide.is_some() => {
+        EdgeKind::Sea | EdgeKind::Coast => {
             // Under an elevation map, the shore is the map's: a sea or shore split takes the
-            // sea floor's rule below and stands on the side of sea level the map has at it,
-            // so that the coast follows the map's zero contour below the base mesh's coast
-            // edges (tens to hundreds of kilometres long) instead of running along them.
-            let len = d.edge_length();
-            let dir = pos.normalize();
-            let map = guide.expect("matched above");
-            let g = match map.at(dir) {
-                Some(m) => {
-                    let floor = guided_sea_floor(d, map, dir, len, m, seed, p);
+            // sea floor's rule and stands on the side of sea level the map has at it, so that
+            // the coast follows the map's zero contour below the base mesh's coast edges (tens
+            // to hundreds of kilometres long) instead of running along them. Without a map (or
+            // off a regional one) the paper's rules: the sea floor by the mean of the edge's
+            // ends plus a random offset, the shore near sea level.
+            let mapped = guide.and_then(|g| {
+                let dir = pos.normalize();
+                g.at(dir).map(|m| (g, dir, m))
+            });
+            let g = match mapped {
+                Some((map, dir, m)) => {
+                    let floor = guided_sea_floor(d, map, dir, d.edge_length(), m, seed, p);
                     if m < 0.0 {
                         floor.min(sea - 1.0)
                     } else {
                         floor.max(sea + 1.0)
                     }
                 }
-                // Off a regional map, the rules without one.
-                None if edge.kind == EdgeKind::Sea => (mid_ground + (xi - 0.5) * sea_roughness(len)).min(sea - 1.0),
+                None if edge.kind == EdgeKind::Sea => {
+                    (mid_ground + (xi - 0.5) * sea_roughness(d.edge_length())).min(sea - 1.0)
+                }
                 None => coast_ground(d, xi, p),
             };
             (g, sea, VertexFlags::empty())
         }
-        EdgeKind::Sea => {
-            // Without a map, the paper's rule: the mean of the edge's ends plus a random offset.
-            let g = mid_ground + (xi - 0.5) * sea_roughness(d.edge_length());
-            (g.min(sea - 1.0), sea, VertexFlags::empty())
-        }
-        EdgeKind::Coast => (coast_ground(d, xi, p), sea, VertexFlags::empty()),
         _ => {
             let w = (va.water + vb.water) * 0.5;
             // Between two vertices under a lake, the river runs under it too.
@@ -215,7 +213,7 @@ fn straddles(d: &Diamond, sea: f64) -> bool {
 /// map's height above (or depth below) sea level, so that the detail fades towards the shore
 /// and no vertex near it jumps across sea level (pinned there at 1 m, the shore between it and
 /// its neighbours zigzagged with the vertices).
-pub fn shore_offset(offset: f64, m: f64) -> f64 {
+fn shore_offset(offset: f64, m: f64) -> f64 {
     let reach = 0.5 * m.abs();
     offset.clamp(-reach, reach)
 }
@@ -274,8 +272,9 @@ fn continent_vertex(
     let holds = |v: &Vertex, le: f64| covers(v, le) && !(by_sea && at_sea(v, sea));
 
     // Eq. 11 (riverbanks) and 12 (slopes) give bounds from the neighbours; land stays above
-    // sea level unless the slope bound wins. Eq. 11's floor is taken from the highest of the wet neighbours (the paper's
-    // minimum would leave a bank under a higher river's floor). Beyond the paper, the ground may not rise faster than s_g from a wet
+    // sea level unless the slope bound wins. Eq. 11's floor is taken from the highest of the
+    // wet neighbours (the paper's minimum would leave a bank under a higher river's floor).
+    // Beyond the paper, the ground may not rise faster than s_g from a wet
     // neighbour's bed either (eq. 11 only bounds it from below): without that ceiling a bank
     // could stand any height above its river, and splitting such a wall copies its height to
     // the new vertex on the dry side, so the wall never shortens and refines without end.
@@ -345,21 +344,23 @@ fn continent_vertex(
     let mapped = guide.filter(|g| edge_len >= g.min_edge_m).and(at_map);
     let wanted = match mapped {
         Some(m) => m,
-        // On a shore (`straddles`), the map's ground plus the landform's offset.
-        None if map_m.is_some() && by_sea && straddles(d, sea) => {
-            let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
-            let [_, _, offset] = landform_parts(around.map(|v| v.ground), edge_len, seed, sea, p.ground_slope(), map);
-            let m = map_m.expect("matched above");
-            (sea + m) + shore_offset(offset, m)
-        }
         None => {
             let map = guide.map_or([0.0; 2], |g| [g.relief_at(dir), g.min_edge_m]);
-            let ground =
-                landform_ground(around.map(|v| v.ground), edge_len, seed, p.sea_level_m, p.ground_slope(), map);
-            // Under a map, its smooth surface bends the diamond's mean: crests below the map's
-            // pixel round up, valleys down, as the map's cubic surface does.
-            let [ca, cb, ct, cd] = corners;
-            guide.map_or(ground, |g| ground + g.bend(dir, [ca, ct, cb, cd], edge_len))
+            let grounds = around.map(|v| v.ground);
+            match map_m.filter(|_| by_sea && straddles(d, sea)) {
+                // On a shore beside the sea, the map's ground plus the landform's offset.
+                Some(m) => {
+                    let [_, _, offset] = landform_parts(grounds, edge_len, seed, sea, p.ground_slope(), map);
+                    (sea + m) + shore_offset(offset, m)
+                }
+                None => {
+                    let ground = landform_ground(grounds, edge_len, seed, sea, p.ground_slope(), map);
+                    // Under a map, its smooth surface bends the diamond's mean: crests below the
+                    // map's pixel round up, valleys down, as the map's cubic surface does.
+                    let [ca, cb, ct, cd] = corners;
+                    guide.map_or(ground, |g| ground + g.bend(dir, [ca, ct, cb, cd], edge_len))
+                }
+            }
         }
     };
     let lo = bank_lo.max(slope_lo);
